@@ -1,0 +1,13 @@
+// The subcommands of the clothlab CLI; each lives in its own cmd_*.cpp.
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace clothlab::cli {
+
+/// Exit codes shared by all commands.
+enum Exit { Ok = 0, BadInput = 1, NotImplementedYet = 2, Unstable = 3, Internal = 70 };
+
+/// `run SCENE [--set k=v]... [--steps N | --seconds T] [--dump FILE.csv] [--out DIR]`
+void addRunCommand(CLI::App& app, int& exit_code);
+
+}  // namespace clothlab::cli

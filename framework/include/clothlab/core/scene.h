@@ -1,0 +1,138 @@
+/// @file scene.h
+/// @brief A scene: which model, which forces, springs, constraints, colliders and solver.
+///
+/// A scene names only what it uses; the simulation built from it runs only those parts.
+/// Scenes are JSON files (see io/scene_json.h and docs/scenes.md); every field has a default.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "clothlab/core/types.h"
+
+namespace clothlab {
+
+/// "spring": one particle hanging from a fixed point (stage 01).
+struct SingleSpringSpec {
+    Vec3 anchor{0, 0, 0};       ///< fixed end point, m
+    Vec3 start{0, -1.5, 0};     ///< initial position of the particle, m
+    Vec3 velocity{0, 0, 0};     ///< initial velocity of the particle, m/s
+    double mass = 1.0;          ///< particle mass m, kg
+    double k = 100.0;           ///< stiffness (Federhärte), N/m
+    double l0 = 1.0;            ///< rest length (Ruhelänge), m
+    double kd = 0.0;            ///< damping along the spring, N s/m
+};
+
+/// "chain": n particles joined by n-1 springs, the first one pinned.
+struct ChainSpec {
+    int particles = 10;         ///< number of particles n (≥ 2)
+    Vec3 anchor{0, 0, 0};       ///< position of particle 0 (pinned), m
+    Vec3 direction{1, 0, 0};    ///< direction in which the chain is laid out (normalised on load)
+    double mass = 0.1;          ///< mass of each particle, kg
+    double k = 1000.0;          ///< stiffness of each link, N/m
+    double l0 = 0.1;            ///< rest length of each link, m
+    double kd = 0.0;            ///< damping along each link, N s/m
+};
+
+/// "cloth": nx x ny particles on a regular grid. Particle (c, r) has index r*nx + c;
+/// row 0 is the top edge, column 0 the left edge.
+struct ClothSpec {
+    int nx = 10;                     ///< particles along the width (≥ 2)
+    int ny = 10;                     ///< particles along the height (≥ 2)
+    double width = 1.0;              ///< extent along x, m
+    double height = 1.0;             ///< extent along y (vertical) or z (horizontal), m
+    double mass = 1.0;               ///< total mass m_gesamt = Σ m_i, kg
+    Vec3 origin{0, 0, 0};            ///< position of the top-left particle, m
+    bool horizontal = false;         ///< false: hangs in the x-y plane; true: lies in the x-z plane
+    std::vector<int> pins;           ///< indices of pinned particles (w = 0)
+};
+
+/// One spring type of the mass-spring network.
+struct SpringGroup {
+    bool enabled = false;   ///< whether springs of this type exist
+    double k = 1000.0;      ///< stiffness, N/m
+    double kd = 0.0;        ///< damping along the spring, N s/m
+};
+
+/// Springs of the mass-spring network (Strukturfedern, Scherfedern, Biegefedern).
+struct ClothSprings {
+    SpringGroup structural;  ///< grid neighbours
+    SpringGroup shear;       ///< diagonal neighbours
+    SpringGroup bending;     ///< neighbours two apart
+};
+
+/// Provot's deformation constraint (1995): limit spring strain after each step.
+struct ProvotSpec {
+    bool enabled = false;      ///< apply the correction
+    double max_strain = 0.1;   ///< critical strain τ (0.1 = 10 %)
+};
+
+/// One position-based constraint type.
+struct ConstraintGroup {
+    bool enabled = false;      ///< whether constraints of this type exist
+    double stiffness = 1.0;    ///< PBD stiffness k in [0, 1]
+    double compliance = 0.0;   ///< XPBD compliance α, m/N (distance) or 1/(N m) (bending)
+};
+
+/// Position-based constraints of the cloth.
+struct ClothConstraints {
+    ConstraintGroup distance;  ///< along structural and shear edges
+    ConstraintGroup bending;   ///< dihedral angle across interior edges
+};
+
+/// A static collider.
+struct Collider {
+    /// Kind of collider.
+    enum class Type {
+        Plane,  ///< infinite plane through `point` with outward `normal`
+        Sphere  ///< sphere around `point` with `radius`
+    };
+    Type type = Type::Plane;   ///< kind of collider
+    Vec3 point{0, 0, 0};       ///< plane: a point on it; sphere: the centre, m
+    Vec3 normal{0, 1, 0};      ///< plane: outward unit normal (normalised on load)
+    double radius = 0.5;       ///< sphere radius, m
+    double friction = 0.0;     ///< Coulomb friction coefficient μ ≥ 0
+    double restitution = 0.0;  ///< coefficient of restitution e in [0, 1]
+};
+
+/// External forces.
+struct ForcesSpec {
+    Vec3 gravity{0, -9.81, 0};  ///< gravitational acceleration g, m/s²
+    double damping = 0.0;       ///< global velocity damping: force -c v (N s/m per particle, MSS) or PBD kDamping in [0, 1]
+    Vec3 wind{0, 0, 0};         ///< wind velocity, m/s (zero: no wind pass)
+    double drag = 1.0;          ///< wind drag coefficient, N s/m² (force per unit area and unit relative velocity)
+};
+
+/// How the scene is stepped.
+struct SolverSpec {
+    std::string method = "symplectic_euler";  ///< explicit_euler, symplectic_euler, velocity_verlet, rk4, implicit_euler, pbd, xpbd
+    double dt = 1e-3;       ///< time step Δt, s
+    int steps = 1000;       ///< number of steps of `./lab run`
+    int iterations = 10;    ///< PBD solver iterations per step
+    int substeps = 1;       ///< PBD substeps per step
+    double thickness = 0.01;///< collision thickness h, m
+};
+
+/// What the run report prints.
+struct ReportSpec {
+    int every = 0;             ///< print a line every R steps (0: about 10 lines per run)
+    double blowup = 1e6;       ///< positions beyond this distance from the origin count as unstable, m
+};
+
+/// A whole scene, as loaded from JSON.
+struct Scene {
+    std::string file;            ///< where it was loaded from
+    std::string description;     ///< one line for the report
+    std::string model = "spring";///< "spring", "chain" or "cloth"
+    SingleSpringSpec spring;     ///< used when model == "spring"
+    ChainSpec chain;             ///< used when model == "chain"
+    ClothSpec cloth;             ///< used when model == "cloth"
+    ClothSprings springs;        ///< mass-spring network (force-based methods on a cloth)
+    ProvotSpec provot;           ///< strain limiting for the mass-spring network
+    ClothConstraints constraints;///< position-based constraints (pbd, xpbd)
+    std::vector<Collider> colliders; ///< static colliders
+    ForcesSpec forces;           ///< gravity, damping, wind
+    SolverSpec solver;           ///< method and step
+    ReportSpec report;           ///< report settings
+};
+
+}  // namespace clothlab

@@ -1,0 +1,103 @@
+#include "clothlab/io/report.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+
+#include <nlohmann/json.hpp>
+
+#include "clothlab/core/input_error.h"
+
+namespace clothlab {
+namespace {
+std::ofstream openForWriting(const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw InputError(path, "(file)", "cannot write the file");
+    out << std::setprecision(12);
+    return out;
+}
+std::string label(const Metric& m) { return m.name + " [" + m.unit + "]"; }
+}  // namespace
+
+void printReportHeader(std::ostream& out, const ReportRow& first) {
+    out << std::setw(10) << "step" << std::setw(12) << "t [s]" << std::setw(12) << "wall [s]";
+    for (const Metric& m : first.metrics) out << std::setw(20) << label(m);
+    out << "\n";
+}
+
+void printReportRow(std::ostream& out, const ReportRow& row) {
+    char buf[64];
+    out << std::setw(10) << row.step;
+    std::snprintf(buf, sizeof buf, "%12.4f%12.4f", row.t, row.wall);
+    out << buf;
+    for (const Metric& m : row.metrics) {
+        std::snprintf(buf, sizeof buf, "%20.6e", m.value);
+        out << buf;
+    }
+    out << "\n";
+}
+
+void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) {
+    char buf[256];
+    const double per_step = r.steps > 0 ? r.wall / static_cast<double>(r.steps) : 0.0;
+    std::snprintf(buf, sizeof buf, "summary: %lld steps, %.4g s simulated in %.4g s wall (%.3g us per step)\n",
+                  r.steps, sim.state().t, r.wall, per_step * 1e6);
+    out << buf;
+    if (!r.rows.empty())
+        for (const Metric& m : r.rows.back().metrics) {
+            std::snprintf(buf, sizeof buf, "  %-22s %14.6e %s\n", m.name.c_str(), m.value, m.unit.c_str());
+            out << buf;
+        }
+    double total = 0.0;
+    for (const auto& p : sim.timer().passes()) total += p.seconds;
+    out << "passes that ran (wall time):\n";
+    for (const auto& p : sim.timer().passes()) {
+        std::snprintf(buf, sizeof buf, "  %-34s %10.4f s %10lld calls %6.1f %%\n", p.name.c_str(), p.seconds, p.calls,
+                      total > 0 ? 100.0 * p.seconds / total : 0.0);
+        out << buf;
+    }
+}
+
+void writeReportCsv(const std::string& path, const RunResult& r) {
+    std::ofstream out = openForWriting(path);
+    out << "step,t,wall";
+    if (!r.rows.empty())
+        for (const Metric& m : r.rows.front().metrics) out << "," << m.name;
+    out << "\n";
+    for (const ReportRow& row : r.rows) {
+        out << row.step << "," << row.t << "," << row.wall;
+        for (const Metric& m : row.metrics) out << "," << m.value;
+        out << "\n";
+    }
+}
+
+void writeSummaryJson(const std::string& path, const Simulation& sim, const RunResult& r) {
+    nlohmann::json j;
+    j["scene"] = sim.scene().file;
+    j["method"] = sim.scene().solver.method;
+    j["dt"] = sim.scene().solver.dt;
+    j["particles"] = sim.state().size();
+    j["steps"] = r.steps;
+    j["simulated_time"] = sim.state().t;
+    j["wall_time"] = r.wall;
+    j["unstable"] = r.unstable;
+    if (r.unstable) j["message"] = r.message;
+    j["metrics"] = nlohmann::json::object();
+    if (!r.rows.empty())
+        for (const Metric& m : r.rows.back().metrics) j["metrics"][m.name] = {{"value", m.value}, {"unit", m.unit}};
+    j["passes"] = nlohmann::json::array();
+    for (const auto& p : sim.timer().passes())
+        j["passes"].push_back({{"name", p.name}, {"seconds", p.seconds}, {"calls", p.calls}});
+    std::ofstream out = openForWriting(path);
+    out << j.dump(2) << "\n";
+}
+
+void writeStateCsv(const std::string& path, const State& s) {
+    std::ofstream out = openForWriting(path);
+    out << "i,x,y,z,vx,vy,vz\n";
+    for (int i = 0; i < s.size(); ++i)
+        out << i << "," << s.x(0, i) << "," << s.x(1, i) << "," << s.x(2, i) << "," << s.v(0, i) << ","
+            << s.v(1, i) << "," << s.v(2, i) << "\n";
+}
+
+}  // namespace clothlab

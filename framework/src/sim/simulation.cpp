@@ -1,0 +1,20 @@
+#include "clothlab/sim/simulation.h"
+
+#include "clothlab/core/input_error.h"
+#include "clothlab/sim/mass_spring.h"
+
+namespace clothlab {
+
+std::unique_ptr<Simulation> makeSimulation(const Scene& scene) {
+    const std::string& method = scene.solver.method;
+    const bool explicit_method = method == "explicit_euler" || method == "symplectic_euler" ||
+                                 method == "velocity_verlet" || method == "rk4";
+    if (explicit_method && scene.model == "spring")
+        return std::make_unique<MassSpringSimulation>(scene, makeSingleSpring(scene.spring));
+    if (explicit_method && scene.model == "chain")
+        return std::make_unique<MassSpringSimulation>(scene, makeChain(scene.chain));
+    throw InputError(scene.file, "solver.method",
+                     "\"" + method + "\" on model \"" + scene.model + "\" is not available in this build");
+}
+
+}  // namespace clothlab

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# The clothlab CLI on good and bad input: every scene runs; every bad input gives exactly one
+# `error: <file>: <field>: <reason>` line and a non-zero exit, never a crash.
+set -u
+exe=$1; root=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+pass=0; fail=0
+ok()   { pass=$((pass+1)); }
+bad()  { fail=$((fail+1)); echo "FAIL: $*"; }
+
+# Every scene in scenes/ loads and runs a few steps.
+for s in "$root"/scenes/*.json; do
+  if "$exe" run "$s" --steps 20 --quiet >"$tmp/out" 2>&1; then ok; else bad "scene $s does not run: $(tail -3 "$tmp/out")"; fi
+done
+
+# expect_error NAME EXPECTED_FIELD_TEXT JSON [extra args]
+expect_error() {
+  local name=$1 field=$2 json=$3; shift 3
+  printf '%s' "$json" > "$tmp/$name.json"
+  "$exe" run "$tmp/$name.json" --steps 1 "$@" >"$tmp/out" 2>"$tmp/err"
+  local code=$?
+  local lines; lines=$(grep -c '^error: ' "$tmp/err")
+  if [[ $code -eq 0 || $code -ge 128 ]]; then bad "$name: exit code $code (want 1..127)";
+  elif [[ $lines -ne 1 ]]; then bad "$name: want one error line, got: $(cat "$tmp/err")";
+  elif ! grep -q "^error: $tmp/$name.json: $field" "$tmp/err"; then bad "$name: want 'error: $tmp/$name.json: $field...', got: $(cat "$tmp/err")";
+  else ok; fi
+}
+expect_error syntax       '(JSON syntax)'  '{"model": "spring",'
+expect_error no_model     'model: missing' '{}'
+expect_error bad_model    'model: unknown value' '{"model": "blob"}'
+expect_error neg_mass     'spring.mass: must be > 0' '{"model": "spring", "spring": {"mass": -1}}'
+expect_error zero_dt      'solver.dt: must be > 0' '{"model": "spring", "solver": {"dt": 0}}'
+expect_error wrong_type   'spring.k: expected a number' '{"model": "spring", "spring": {"k": "stiff"}}'
+expect_error unknown_key  'spring.stiffness: unknown key' '{"model": "spring", "spring": {"stiffness": 3}}'
+expect_error bad_vec      'spring.start: expected an array of 3 numbers' '{"model": "spring", "spring": {"start": [1, 2]}}'
+expect_error huge         '(JSON syntax): number overflow' '{"model": "spring", "spring": {"k": 1e999}}'
+expect_error nan_set      'spring.k: expected a number' '{"model": "spring"}' --set spring.k=nan
+expect_error set_unknown  'solver.dtt: unknown key' '{"model": "spring"}' --set solver.dtt=0.1
+expect_error grid         'cloth.nx: must be between 2' '{"model": "cloth", "cloth": {"nx": 1}}'
+expect_error pin_range    'cloth.pins\[0\]: particle index 100' '{"model": "cloth", "cloth": {"nx": 3, "ny": 3, "pins": [100]}}'
+expect_error chain_short  'chain.particles: must be between 2' '{"model": "chain", "chain": {"particles": 1}}'
+expect_error method       'solver.method: unknown value' '{"model": "spring", "solver": {"method": "magic"}}'
+expect_error pbd_spring   'solver.method: "pbd" needs model "cloth"' '{"model": "spring", "solver": {"method": "pbd"}}'
+expect_error collider     'colliders\[0\].radius: must be > 0' '{"model": "cloth", "colliders": [{"type": "sphere", "radius": -1}]}'
+expect_error not_object   '(top level): expected an object' '[1, 2, 3]'
+
+# A missing file.
+"$exe" run "$tmp/nope.json" >"$tmp/out" 2>"$tmp/err"
+if [[ $? -eq 1 ]] && grep -q "^error: $tmp/nope.json: (file): cannot open" "$tmp/err"; then ok; else bad "missing file: $(cat "$tmp/err")"; fi
+
+# An explicit method that blows up stops with "unstable at step N" and a non-zero exit.
+"$exe" run "$root/scenes/spring.json" --set solver.method=explicit_euler --set spring.k=1e9 --set solver.dt=0.01 --steps 10000 --quiet >"$tmp/out" 2>"$tmp/err"
+code=$?
+if [[ $code -eq 3 ]] && grep -q "unstable at step" "$tmp/err"; then ok; else bad "blow-up: exit $code, $(cat "$tmp/err")"; fi
+
+# --dump writes the documented header and one row per particle.
+"$exe" run "$root/scenes/chain.json" --steps 10 --quiet --dump "$tmp/state.csv" >/dev/null 2>&1
+if [[ "$(head -1 "$tmp/state.csv")" == "i,x,y,z,vx,vy,vz" && $(wc -l <"$tmp/state.csv") -eq 11 ]]; then ok; else bad "dump: $(head -3 "$tmp/state.csv")"; fi
+
+echo "$pass passed, $fail failed"
+[[ $fail -eq 0 ]]
