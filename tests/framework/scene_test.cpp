@@ -59,3 +59,23 @@ TEST(Scene, EveryShippedSceneLoads) {
         EXPECT_NO_THROW(loadScene(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/" + name + ".json")) << name;
     }
 }
+
+#include "clothlab/core/grid.h"
+
+TEST(Grid, MassesPinsAndTriangles) {
+    ClothSpec c;
+    c.nx = 4, c.ny = 3, c.mass = 2.4, c.width = 3.0, c.height = 1.0, c.pins = {0, 3};
+    const State s = makeGridState(c);
+    ASSERT_EQ(s.size(), 12);
+    EXPECT_DOUBLE_EQ(s.w[5], 12 / 2.4);
+    EXPECT_EQ(s.w[0], 0.0);
+    EXPECT_EQ(s.w[3], 0.0);
+    EXPECT_TRUE(s.x.col(gridIndex(3, 2, 4)).isApprox(Vec3(3.0, -1.0, 0.0)));
+    const auto tris = gridTriangles(4, 3);
+    EXPECT_EQ(tris.size(), 12u);
+    // Counter-clockwise seen from +z: the normal of every triangle of a vertical cloth points to +z.
+    for (const auto& t : tris) {
+        const Vec3 n = (s.x.col(t[1]) - s.x.col(t[0])).cross(s.x.col(t[2]) - s.x.col(t[0]));
+        EXPECT_GT(n.z(), 0.0);
+    }
+}
