@@ -3,7 +3,7 @@
 set -u
 build=$1
 bad=0; n=0
-for exe in "$build"/framework/clothlab "$build"/tests/grade_* "$build"/tests/framework_tests; do
+for exe in "$build"/bin/clothlab "$build"/bin/clothlab-grade "$build"/bin/grade_* "$build"/bin/framework_tests "$build"/bin/*_tests; do
   [[ -x $exe ]] || continue
   n=$((n+1))
   if ldd "$exe" | grep -Ei 'lib(GL|GLX|EGL|OSMesa|glfw|imgui)[^a-z]' ; then
