@@ -79,6 +79,16 @@ std::vector<std::string> listTests(const std::string& exe, const fs::path& tmp) 
     return names;
 }
 
+/// GoogleTest starts a failure with "path/to/file.cpp:123" or "unknown file": keep only "file.cpp:123: ".
+std::string tidyFailure(const std::string& text) {
+    const auto nl = text.find('\n');
+    if (nl == std::string::npos) return text;
+    const std::string first = text.substr(0, nl), rest = text.substr(nl + 1);
+    if (first == "unknown file") return rest;
+    if (first.find(".cpp:") != std::string::npos) return fs::path(first).filename().string() + ": " + rest;
+    return text;
+}
+
 /// Runs one test in its own process with a time limit.
 TestResult runOne(const std::string& exe, const std::string& name, int timeout_s, const fs::path& tmp) {
     TestResult r;
@@ -103,7 +113,7 @@ TestResult runOne(const std::string& exe, const std::string& name, int timeout_s
     for (const auto& suite : j["testsuites"])
         for (const auto& t : suite["testsuite"]) {
             if (t.contains("failures")) {
-                for (const auto& f : t["failures"]) r.message += f.value("failure", "") + "\n";
+                for (const auto& f : t["failures"]) r.message += tidyFailure(f.value("failure", "")) + "\n";
                 return r;
             }
             r.passed = code == 0;
