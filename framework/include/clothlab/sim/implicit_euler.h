@@ -10,6 +10,7 @@
 /// It is stable for every Δt on a linear spring system, at the price of artificial damping:
 /// an undamped oscillation loses energy by the factor 1/(1 + ω²Δt²) per step.
 #pragma once
+#include <array>
 #include <vector>
 
 #include <Eigen/SparseCholesky>
@@ -22,6 +23,15 @@ namespace clothlab {
 
 /// Sparse matrix type of the implicit solver (column-major, double).
 using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// The 3x3 Jacobian blocks of one spring (formulas at addSpringJacobians()): \f$ K_{jj} = \partial\vec f_j/\partial\vec x_j \f$
+/// (N/m) and \f$ D_{jj} = \partial\vec f_j/\partial\vec v_j \f$ (N s/m); the other blocks are
+/// \f$ K_{ii} = K_{jj} \f$, \f$ K_{ij} = K_{ji} = -K_{jj} \f$ and the same for D. Zero for a spring shorter than 10⁻¹² m.
+/// @param s    the spring
+/// @param x    positions, 3 x N, m
+/// @param Kjj  set to ∂f_j/∂x_j, N/m
+/// @param Djj  set to ∂f_j/∂v_j, N s/m
+void springJacobianBlocks(const Spring& s, const Matrix3X& x, Eigen::Matrix3d& Kjj, Eigen::Matrix3d& Djj);
 
 /// Adds the force Jacobians of the springs to triplet lists, 3x3 blocks per particle pair.
 ///
@@ -60,12 +70,20 @@ public:
               double c, double dt);
 
 private:
-    std::vector<int> index_;                       ///< particle → first unknown, −1 if pinned
-    std::vector<Eigen::Triplet<double>> K_, D_;    ///< Jacobian triplets of the current step
-    SparseMatrix A_;                               ///< the system matrix
-    Eigen::SimplicialLDLT<SparseMatrix> ldlt_;     ///< its factorisation
-    bool analysed_ = false;                        ///< symbolic analysis done
-    Matrix3X f_;                                   ///< forces at the start of the step
+    /// Builds the sparsity pattern of A (mass diagonal + one 3x3 block per spring end pair) and the
+    /// offsets of every block entry in A's value array, then analyses the pattern.
+    void buildPattern(const VectorX& w, const std::vector<Spring>& springs);
+    /// Offset of entry (r, c) in A_'s value array.
+    int offset(int r, int c);
+
+    std::vector<int> index_;                   ///< particle → first unknown, −1 if pinned
+    std::vector<int> diag_;                    ///< per unknown: offset of its diagonal entry in A_
+    std::vector<std::array<int, 36>> blocks_;  ///< per spring: offsets of its (a,a), (b,b), (a,b), (b,a) blocks, −1 if absent
+    size_t pattern_springs_ = 0;               ///< number of springs the pattern was built for
+    SparseMatrix A_;                           ///< the system matrix
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt_; ///< its factorisation
+    Matrix3X f_;                               ///< forces at the start of the step
+    VectorX b_;                                ///< right-hand side
 };
 
 }  // namespace clothlab
