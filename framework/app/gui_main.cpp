@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     CLI::App cli{"clothlab-gui — the interactive cloth lab (GLFW window + Dear ImGui)"};
     std::string scene, scenes = CLOTHLAB_SCENES_DIR, screenshot, size = "1280x800";
     int frames = 0, wave = 0;
+    bool edges = false;
     cli.add_option("scene", scene, "Scene file (default: the first in --scenes)");
     cli.add_option("--scenes", scenes, "Folder the scene picker lists");
     cli.add_option("--screenshot", screenshot, "Run --frames frames, save the window as PNG and quit");
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     cli.add_option("--size", size, "Window size WIDTHxHEIGHT");
     cli.add_option("--bench-grid", wave, "Benchmark: show an n x n cloth moved by a wave; prints frames per second")
         ->check(CLI::Range(0, 1024));
+    cli.add_flag("--edges", edges, "Start with the spring/constraint overlay shown");
     CLI11_PARSE(cli, argc, argv);
     int W = 1280, H = 800;
     if (std::sscanf(size.c_str(), "%dx%d", &W, &H) != 2 || W < 64 || H < 64) {
@@ -62,6 +64,7 @@ int main(int argc, char** argv) {
         o.scene = scene;
         o.scenes_dir = scenes;
         o.wave_grid = wave;
+        o.edges = edges ? 1 : -1;
         App app(o);
         int frame = 0, fw = W, fh = H;
         auto t0 = std::chrono::steady_clock::now();

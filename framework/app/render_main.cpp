@@ -78,22 +78,25 @@ int runRender(const RenderArgs& a) {
     auto sim = makeSimulation(scene);
     const double dt = scene.solver.dt;
     const double T = a.seconds >= 0 ? a.seconds : scene.solver.steps * dt;
+    // Frame f shows the state after round(f / (fps dt)) steps, so the clip keeps time with the simulation.
     const long long per_frame = std::max<long long>(1, std::llround(1.0 / (a.fps * dt)));
-    const long long frames = static_cast<long long>(std::floor(T / (per_frame * dt) + 1e-9)) + 1;
+    const long long frames = static_cast<long long>(std::floor(T * a.fps + 1e-9)) + 1;
+    auto stepsUntil = [&](long long f) { return std::max<long long>(f, std::llround(f / (a.fps * dt))); };
 
     std::cout << "scene   " << scene.file << (scene.description.empty() ? "" : "  — " + scene.description) << "\n"
               << "method  " << scene.solver.method << "   dt = " << dt << " s   " << frames << " frames at " << a.fps
-              << " fps (" << per_frame << " steps each)   particles = " << sim->state().size() << "\n";
+              << " fps (about " << per_frame << " steps each)   particles = " << sim->state().size() << "\n";
 
     // 1) Simulate, keeping the state of every frame (and the report rows of error against wall time).
     std::vector<DrawData> shots;
     RunResult result;
-    const long long every = std::max<long long>(1, (frames - 1) / 10) * per_frame;
+    const long long every = std::max<long long>(1, stepsUntil(frames - 1) / 10);
     bool header = false;
     const auto t0 = Clock::now();
     for (long long f = 0; f < frames; ++f) {
         if (f > 0) {
-            for (long long k = 0; k < per_frame; ++k) {
+            const long long n = stepsUntil(f) - result.steps;
+            for (long long k = 0; k < n; ++k) {
                 sim->step();
                 ++result.steps;
                 if (!sim->state().isFinite()) {
@@ -101,7 +104,7 @@ int runRender(const RenderArgs& a) {
                     result.message = "unstable at step " + std::to_string(result.steps) + " (t = " + std::to_string(sim->state().t) + " s)";
                     break;
                 }
-                if (result.steps % every == 0 || (f == frames - 1 && k == per_frame - 1)) {
+                if (result.steps % every == 0 || (f == frames - 1 && k == n - 1)) {
                     ReportRow row{result.steps, sim->state().t, seconds(t0, Clock::now()), sim->metrics()};
                     if (!a.quiet) {
                         if (!header) printReportHeader(std::cout, row), header = true;
@@ -174,7 +177,7 @@ int runRender(const RenderArgs& a) {
 // ---- gui --screenshot and bench ----------------------------------------------------------------
 struct GuiArgs {
     std::string scene, screenshot, scenes = CLOTHLAB_SCENES_DIR, size = "1280x800";
-    int frames = 30, wave = 0;
+    int frames = 30, wave = 0, edges = -1;
 };
 
 int runGui(const GuiArgs& a, bool bench) {
@@ -186,6 +189,7 @@ int runGui(const GuiArgs& a, bool bench) {
     o.scene = a.scene;
     o.scenes_dir = a.scenes;
     o.wave_grid = a.wave;
+    o.edges = a.edges;
     App app(o);
     // The first frames build the font texture and lay out the panel; time the rest.
     const int warm = 3, frames = std::max(a.frames, warm + 1);
@@ -238,6 +242,7 @@ int main(int argc, char** argv) {
     g->add_option("--frames", ga.frames, "Frames to run before the screenshot")->check(CLI::Range(1, 100000));
     g->add_option("--scenes", ga.scenes, "Folder the scene picker lists");
     g->add_option("--size", ga.size, "Window size WIDTHxHEIGHT");
+    g->add_flag_callback("--edges", [&] { ga.edges = 1; }, "Start with the spring/constraint overlay shown");
     g->callback([&] { code = runGui(ga, false); });
 
     GuiArgs ba;
@@ -247,6 +252,7 @@ int main(int argc, char** argv) {
     b->add_option("--frames", ba.frames, "Frames to time")->check(CLI::Range(1, 100000));
     b->add_option("--size", ba.size, "Window size WIDTHxHEIGHT");
     b->add_option("--screenshot", ba.screenshot, "Also save the last frame");
+    b->add_flag_callback("--edges", [&] { ba.edges = 1; }, "Draw the spring/constraint overlay too");
     b->callback([&] {
         if (ba.wave == 0) ba.wave = 32;
         code = runGui(ba, true);

@@ -75,7 +75,11 @@ void setupImGuiStyle() {
     st.GrabRounding = 4;
     st.WindowBorderSize = 0;
     st.Colors[ImGuiCol_WindowBg].w = 0.92f;
-    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini next to the user's files
+    // A readable font when Debian's fonts-dejavu-core is installed; else ImGui's built-in one.
+    const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    if (io.Fonts->Fonts.empty() && std::filesystem::exists(font)) io.Fonts->AddFontFromFileTTF(font, 15.0f);
 }
 
 DrawData waveCloth(int n, double t) {
@@ -124,7 +128,7 @@ bool App::load(const std::string& path) {
     user_pins_.clear();
     energy_.clear(), error_.clear(), step_ms_.clear();
     camera_set_ = false;
-    view_.edges = scene_.model != "cloth";
+    view_.edges = options_.edges < 0 ? (scene_.model != "cloth" && options_.wave_grid < 2) : options_.edges == 1;
     rebuild(false);
     return true;
 }

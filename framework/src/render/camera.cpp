@@ -90,7 +90,7 @@ Camera fitCamera(const Vec3& lo, const Vec3& hi, double aspect) {
     const bool flat = ext.z() < 1e-6 * std::max(1.0, ext.norm());
     const Vec3 dir = (flat ? Vec3(0.25, 0.18, 1.0) : Vec3(0.55, 0.45, 1.0)).normalized();
     const double half = std::min(cam.fovy, 2 * std::atan(std::tan(cam.fovy * kPi / 360) * aspect) * 180 / kPi) * kPi / 360;
-    const double dist = r / std::sin(half) * 1.02;
+    const double dist = r / std::sin(half) * 1.25;  // the bounding sphere plus a margin
     cam.target = c;
     cam.eye = c + dist * dir;
     cam.znear = std::max(1e-3, dist * 0.01);
