@@ -7,7 +7,11 @@
 #include <cstring>
 #include <iostream>
 
+#include <imgui.h>
+#include <backends/imgui_impl_opengl2.h>
+
 #include "clothlab/core/grid.h"
+#include "clothlab/gui/app.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/render/camera.h"
 #include "clothlab/render/draw_data.h"
@@ -50,7 +54,8 @@ RenderOptions surfaceOnly() {
 }
 
 Image render(const DrawData& d, const Camera& cam, const RenderOptions& o) {
-    OffscreenContext& ctx = context();  // current before drawing
+    OffscreenContext& ctx = context();
+    ctx.makeCurrent();  // current before drawing
     Renderer r;
     r.draw(d, cam, o, W, H);
     return ctx.read();
@@ -201,6 +206,57 @@ TEST(Image, PngRoundTrip) {
     writePng(path, img);
     const Image back = readPng(path);
     EXPECT_TRUE(back.width == 3 && back.height == 2 && back.rgba == img.rgba);
+}
+
+// The app with simulated mouse input (ImGui io), offscreen: grab and drag a particle, pin and unpin it.
+TEST(App, DragAndPinAParticleWithTheMouse) {
+    const int w = 900, h = 560;
+    OffscreenContext ctx(w, h);
+    ImGui::CreateContext();
+    setupImGuiStyle();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(w, h);
+    ImGui_ImplOpenGL2_Init();
+    AppOptions o;
+    o.scene = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/chain.json";
+    o.play = false;
+    App app(o);
+    auto frame = [&](Vec3 mouse, bool left, bool right) {
+        io.MousePos = ImVec2(float(mouse.x()), float(mouse.y()));
+        io.MouseDown[0] = left;
+        io.MouseDown[1] = right;
+        io.DeltaTime = 1.0f / 60;
+        ImGui_ImplOpenGL2_NewFrame();
+        ImGui::NewFrame();
+        app.frame(w, h);
+        ImGui::Render();
+        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+    };
+    frame(Vec3(w - 5, h - 5, 0), false, false);
+    frame(Vec3(w - 5, h - 5, 0), false, false);
+    ASSERT_NE(app.simulation(), nullptr) << app.message();
+    const int k = 9;  // the free end of the chain
+    const Vec3 s = app.camera().project(app.simulation()->state().x.col(k), w, h);
+    ASSERT_GT(s.x(), 360) << "the chain's end should be right of the panel";
+    const double w_before = app.simulation()->state().w[k];
+    frame(s, true, false);                          // press on the particle
+    const Vec3 to(std::round(s.x()) - 40, std::round(s.y()) + 60, 0);  // ImGui rounds the mouse to whole pixels
+    frame(to, true, false);                         // drag
+    const Vec3 now = app.camera().project(app.simulation()->state().x.col(k), w, h);
+    EXPECT_NEAR(now.x(), to.x(), 0.5) << "the dragged particle should follow the cursor";
+    EXPECT_NEAR(now.y(), to.y(), 0.5);
+    EXPECT_NEAR(now.z(), s.z(), 1e-6) << "dragging keeps the particle's depth";
+    frame(to, false, false);                        // release
+    EXPECT_EQ(app.simulation()->state().w[k], w_before) << "releasing restores the inverse mass";
+    frame(to, false, true);                         // right click: pin
+    EXPECT_EQ(app.simulation()->state().w[k], 0.0) << "a right click should pin the particle (w = 0)";
+    frame(to, false, false);
+    frame(to, false, true);                         // right click again: unpin
+    EXPECT_GT(app.simulation()->state().w[k], 0.0) << "a second right click should unpin it";
+    app.stepOnce();
+    EXPECT_TRUE(app.message().empty()) << app.message();
+    ImGui_ImplOpenGL2_Shutdown();
+    ImGui::DestroyContext();
 }
 
 // `render_test --check-app-screenshot FILE`: the app's picture has the panel on the left (light window

@@ -30,6 +30,10 @@ OffscreenContext::~OffscreenContext() {
     if (ctx_) OSMesaDestroyContext(static_cast<OSMesaContext>(ctx_));
 }
 
+void OffscreenContext::makeCurrent() {
+    OSMesaMakeCurrent(static_cast<OSMesaContext>(ctx_), buffer_.data(), GL_UNSIGNED_BYTE, width_, height_);
+}
+
 Image OffscreenContext::read() {
     glFinish();
     return readPixels(width_, height_);

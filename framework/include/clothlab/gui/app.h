@@ -68,6 +68,8 @@ public:
     const std::string& message() const { return message_; }
     /// The running simulation (null when the scene's method is not available in this build).
     const Simulation* simulation() const { return sim_.get(); }
+    /// The camera of the 3-D view (fitted to the scene on the first frame).
+    const Camera& camera() const { return cam_; }
     /// Advances the simulation by one step (as the "Step" button does).
     void stepOnce();
 

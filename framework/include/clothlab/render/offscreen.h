@@ -24,6 +24,8 @@ public:
     int width() const { return width_; }
     /// Height of the buffer in pixels.
     int height() const { return height_; }
+    /// Makes this context current again (after another one was used).
+    void makeCurrent();
     /// Waits for rendering to finish and returns the buffer, top row first.
     Image read();
 
