@@ -259,6 +259,49 @@ TEST(App, DragAndPinAParticleWithTheMouse) {
     ImGui::DestroyContext();
 }
 
+// Every method on a cloth scene: the app either runs it or shows why not in the panel; it never throws,
+// and the frame still shows the cloth.
+TEST(App, EveryMethodRunsOrExplainsItself) {
+    const int w = 640, h = 400;
+    OffscreenContext ctx(w, h);
+    ImGui::CreateContext();
+    setupImGuiStyle();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(w, h);
+    ImGui_ImplOpenGL2_Init();
+    const char* tmp = std::getenv("CLOTHLAB_TEST_TMP");
+    for (const std::string& method : solverMethods()) {
+        const std::string path = std::string(tmp ? tmp : ".") + "/cloth_" + method + ".json";
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        std::fprintf(f, R"({"model": "cloth", "cloth": {"nx": 8, "ny": 8, "pins": [0, 7]},
+            "springs": {"structural": {"k": 500}, "shear": {"k": 100}},
+            "constraints": {"distance": {"stiffness": 1.0}},
+            "solver": {"method": "%s", "dt": 0.002}})", method.c_str());
+        std::fclose(f);
+        AppOptions o;
+        o.scene = path;
+        App app(o);
+        for (int k = 0; k < 3; ++k) {
+            io.DeltaTime = 1.0f / 60;
+            ImGui_ImplOpenGL2_NewFrame();
+            ImGui::NewFrame();
+            EXPECT_NO_THROW(app.frame(w, h)) << method;
+            ImGui::Render();
+            ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        }
+        EXPECT_TRUE(app.simulation() != nullptr || !app.message().empty())
+            << method << ": neither a simulation nor a message in the panel";
+        const Image img = ctx.read();
+        int cloth = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 360; x < w; ++x) cloth += warm(img.at(x, y)) || cool(img.at(x, y));
+        EXPECT_GT(cloth, 200) << method << ": the cloth should be drawn even when its method is not available";
+    }
+    ImGui_ImplOpenGL2_Shutdown();
+    ImGui::DestroyContext();
+}
+
 // `render_test --check-app-screenshot FILE`: the app's picture has the panel on the left (light window
 // with dark text) and the scene on the right (the orange particle of the spring scene, the background).
 static int checkAppScreenshot(const char* path) {

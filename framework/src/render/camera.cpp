@@ -90,9 +90,24 @@ Camera fitCamera(const Vec3& lo, const Vec3& hi, double aspect) {
     const bool flat = ext.z() < 1e-6 * std::max(1.0, ext.norm());
     const Vec3 dir = (flat ? Vec3(0.25, 0.18, 1.0) : Vec3(0.55, 0.45, 1.0)).normalized();
     const double half = std::min(cam.fovy, 2 * std::atan(std::tan(cam.fovy * kPi / 360) * aspect) * 180 / kPi) * kPi / 360;
-    const double dist = r / std::sin(half) * 1.25;  // the bounding sphere plus a margin
+    double dist = r / std::sin(half) * 1.25;  // the bounding sphere plus a margin: sees everything
     cam.target = c;
     cam.eye = c + dist * dir;
+    // Then move closer until the box's corners fill about 85 % of the view (a few fixed-point steps).
+    for (int it = 0; it < 6; ++it) {
+        const Eigen::Matrix4d pv = cam.projection(aspect) * cam.view();
+        double m = 0.0;
+        for (int k = 0; k < 8; ++k) {
+            const Vec3 p((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(), (k & 4) ? hi.z() : lo.z());
+            const Eigen::Vector4d q = pv * p.homogeneous();
+            if (q[3] <= 0) { m = 10; break; }
+            m = std::max({m, std::abs(q[0] / q[3]), std::abs(q[1] / q[3])});
+        }
+        const double f = std::clamp(m / 0.85, 0.5, 2.0);
+        if (std::abs(f - 1) < 0.01) break;
+        dist *= f;
+        cam.eye = c + dist * dir;
+    }
     cam.znear = std::max(1e-3, dist * 0.01);
     cam.zfar = dist * 100;
     return cam;

@@ -98,6 +98,8 @@ DrawData makeDrawData(const Simulation& sim) {
         else rest = sim.state();
     }
     setEdges(d, sim.edges(), s, rest);
+    if (const auto exact = singleSpringAnalytic(s))
+        d.ghosts.push_back(s.spring.anchor + exact->position(d.t) * (s.spring.start - s.spring.anchor).normalized());
     return d;
 }
 

@@ -22,8 +22,17 @@ void drawOverlay(const DrawData& d, const RenderOptions& opt, float left) {
     dl->AddText(ImVec2(left + 10, 8 + ImGui::GetTextLineHeightWithSpacing()), ink, line);
 
     const bool edges_shown = opt.edges || d.triangles.empty();
-    if (!edges_shown || d.edges.empty()) return;
     const float lh = ImGui::GetTextLineHeightWithSpacing();
+    if (!d.ghosts.empty()) {
+        // Legend of the two spheres: simulated particle and analytic solution.
+        const ImVec2 q(left + 10, size.y - 2 * lh - 8);
+        dl->AddRectFilled(ImVec2(q.x - 4, q.y - 4), ImVec2(q.x + 190, size.y - 4), IM_COL32(255, 255, 255, 200), 4);
+        dl->AddCircleFilled(ImVec2(q.x + 8, q.y + lh / 2), 6, IM_COL32(242, 140, 38, 255));
+        dl->AddText(ImVec2(q.x + 20, q.y), ink, "simulated");
+        dl->AddCircleFilled(ImVec2(q.x + 8, q.y + lh * 1.5f), 6, IM_COL32(64, 190, 90, 150));
+        dl->AddText(ImVec2(q.x + 20, q.y + lh), ink, "analytic solution");
+    }
+    if (!edges_shown || d.edges.empty()) return;
     ImVec2 p(size.x - 170, size.y - 10);
     if (opt.color_by_strain) {
         // A vertical colour bar from -range (blue) to +range (red).

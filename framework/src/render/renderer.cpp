@@ -314,8 +314,9 @@ void Renderer::drawEdges(const DrawData& d, const RenderOptions& opt, double sca
             if (len <= 0) continue;
             Vec3 u, v;
             planeAxes(axis / len, u, v);
-            const double r = std::min(0.035 * scale, 0.25 * d.rest_length[e]);
-            const int turns = 12, seg = turns * 12;
+            const bool lone = d.edges.size() == 1;
+            const double r = std::min(0.035 * scale, (lone ? 0.25 : 0.15) * d.rest_length[e]);
+            const int turns = lone ? 12 : 5, seg = turns * 12;
             Vec3 prev = a;
             for (int k = 1; k <= seg; ++k) {
                 const double s = double(k) / seg;
@@ -347,6 +348,16 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
             setMaterial(GL_FRONT_AND_BACK, pinned ? Eigen::Vector3f(0.85f, 0.12f, 0.10f) : Eigen::Vector3f(0.95f, 0.55f, 0.15f), 0.5f, 50);
             drawSphere(d.x.col(i), (pinned ? 0.035 : (n > 3 ? 0.045 : 0.08)) * scale, 24, 12);
         }
+        // The analytic solution as a translucent green ghost.
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        const float amb[4] = {0.1f, 0.3f, 0.15f, 0.45f}, dif[4] = {0.25f, 0.75f, 0.35f, 0.45f};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, amb);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, dif);
+        for (const Vec3& g : d.ghosts) drawSphere(g, (n > 3 ? 0.05 : 0.09) * scale, 24, 12);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
         glDisable(GL_LIGHTING);
         return;
     }

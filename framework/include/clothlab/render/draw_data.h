@@ -38,6 +38,7 @@ struct DrawData {
     std::vector<Eigen::Vector3i> triangles;  ///< cloth surface, counter-clockwise index triples (may be empty)
     Eigen::Matrix2Xd uv;                     ///< texture coordinates per particle in [0, 1]² (cloth only; else empty)
     std::vector<Collider> colliders;         ///< planes and spheres
+    std::vector<Vec3> ghosts;                ///< where an analytic solution puts the particles (drawn translucent), m
     double t = 0.0;                          ///< simulated time, s (shown in the corner)
     std::string title;                       ///< one line shown in the corner (scene and method)
 
@@ -48,6 +49,8 @@ struct DrawData {
 
 /// Fills a DrawData from a running simulation: its state, edges(), triangles() and the scene's colliders.
 /// Edge kinds and rest lengths are derived from the scene (cloth grid offsets; chain and spring l0).
+/// For the single spring with a 1-D analytic solution, the ghost is the exact position
+/// \f$ x_{anchor} + \xi(t)\, u \f$ (u: unit vector from the anchor to the start).
 /// @param sim  the simulation
 DrawData makeDrawData(const Simulation& sim);
 
