@@ -329,6 +329,14 @@ Scene readScene(const json& doc, const std::string& file) {
     s.report.every = rep.integer("every", s.report.every, 0, 1'000'000'000);
     s.report.blowup = rep.number("blowup", s.report.blowup, 0, INFINITY, true);
     rep.finish();
+
+    Reader view = r.object("view");
+    s.view.camera = view.has("eye");
+    s.view.eye = view.vec3("eye", s.view.eye);
+    s.view.target = view.vec3("target", s.view.target);
+    s.view.fov = view.number("fov", s.view.fov, 1, 170);
+    if (s.view.camera && (s.view.eye - s.view.target).norm() <= 0) view.fail("target", "equals view.eye");
+    view.finish();
     r.finish();
     return s;
 }

@@ -118,6 +118,14 @@ struct ReportSpec {
     double blowup = 1e6;       ///< positions beyond this distance from the origin count as unstable, m
 };
 
+/// How the renderer looks at the scene (optional; without `view.eye` the camera is fitted to the scene).
+struct ViewSpec {
+    bool camera = false;        ///< true when the scene sets eye and target
+    Vec3 eye{0, 0, 3};          ///< camera position, m
+    Vec3 target{0, 0, 0};       ///< point looked at, m
+    double fov = 35.0;          ///< vertical field of view, degrees
+};
+
 /// A whole scene, as loaded from JSON.
 struct Scene {
     std::string file;            ///< where it was loaded from
@@ -133,6 +141,7 @@ struct Scene {
     ForcesSpec forces;           ///< gravity, damping, wind
     SolverSpec solver;           ///< method and step
     ReportSpec report;           ///< report settings
+    ViewSpec view;               ///< camera of the renderer and the app
 };
 
 }  // namespace clothlab

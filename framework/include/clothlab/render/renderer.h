@@ -1,0 +1,68 @@
+/// @file renderer.h
+/// @brief The OpenGL renderer: cloth surface, spring/constraint overlay, particles, colliders, ground grid.
+///
+/// Draws into whatever OpenGL context is current (an OSMesa buffer or a GLFW window) with the
+/// fixed-function pipeline of OpenGL 1.x/2.x (compatibility profile), which both provide. This code is
+/// compiled once and linked into both programs; it links no GL library itself.
+#pragma once
+#include <cmath>
+#include <vector>
+
+#include "clothlab/render/camera.h"
+#include "clothlab/render/draw_data.h"
+#include "clothlab/render/image.h"
+
+namespace clothlab {
+
+/// What to draw and how.
+struct RenderOptions {
+    bool surface = true;          ///< the cloth surface (lit, two-sided: front warm, back cool)
+    bool edges = false;           ///< the spring/constraint overlay
+    bool color_by_strain = false; ///< colour edges by strain (blue: compressed, red: stretched) instead of by type
+    double strain_range = 0.1;    ///< strain mapped to full red/blue (0.1 = 10 %)
+    bool show_kind[4] = {true, true, true, true};  ///< per EdgeKind (single, structural, shear, bending)
+    bool particles = false;       ///< the particles of a cloth as points (a spring's or chain's particles are always drawn, as spheres)
+    bool pinned = true;           ///< mark pinned particles (w = 0) in red
+    bool colliders = true;        ///< planes and spheres
+    bool ground = true;           ///< the ground grid
+    bool legend = true;           ///< the colour legend and title in the overlay (see overlay.h)
+    float line_width = 1.5f;      ///< overlay line width, pixels
+    double ground_y = std::nan("");  ///< height of the ground grid, m (NaN: below the lowest point of this frame)
+};
+
+/// Draws DrawData with a camera. Holds the few GL objects it creates (the cloth texture),
+/// so use one Renderer per GL context.
+class Renderer {
+public:
+    /// Renders one frame into the current context's viewport of size width x height:
+    /// background gradient, ground grid, colliders, cloth surface, edges, particles.
+    /// @param d              what to draw
+    /// @param cam            camera
+    /// @param opt            options
+    /// @param width, height  viewport size in pixels
+    void draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height);
+
+private:
+    void drawSurface(const DrawData& d, double scale);
+    void drawEdges(const DrawData& d, const RenderOptions& opt, double scale);
+    void drawParticles(const DrawData& d, const RenderOptions& opt, double scale);
+    unsigned texture_ = 0;        ///< checker texture of the cloth (0: not created yet)
+    std::vector<float> buf_;      ///< scratch vertex data
+    std::vector<float> nrm_;      ///< scratch normals
+    std::vector<unsigned> idx_;   ///< scratch indices
+};
+
+/// RGB colour (components in [0, 1]) of an edge kind in the overlay.
+/// @param kind  the kind
+Eigen::Vector3f edgeKindColor(EdgeKind kind);
+
+/// Diverging colour map for strain: blue (−range) – light grey (0) – red (+range), clamped.
+/// @param strain  ε = l/l0 − 1
+/// @param range   strain mapped to the end colours (> 0)
+Eigen::Vector3f strainColor(double strain, double range);
+
+/// Reads the current context's colour buffer (width x height) into an image, top row first.
+/// @param width, height  size in pixels
+Image readPixels(int width, int height);
+
+}  // namespace clothlab

@@ -1,0 +1,480 @@
+// The interactive app: simulation + 3-D view + Dear ImGui panels (platform-free).
+#include "clothlab/gui/app.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "clothlab/core/grid.h"
+#include "clothlab/core/input_error.h"
+#include "clothlab/core/not_implemented.h"
+#include "clothlab/io/scene_json.h"
+#include "clothlab/render/overlay.h"
+
+#ifndef CLOTHLAB_STAGE_CODE
+#define CLOTHLAB_STAGE_CODE ""
+#endif
+
+namespace clothlab {
+
+namespace {
+constexpr size_t kHistory = 300;  // samples in each plot
+const ImVec4 kRed(0.85f, 0.15f, 0.12f, 1.0f);
+
+void push(std::deque<float>& q, double v) {
+    q.push_back(static_cast<float>(v));
+    if (q.size() > kHistory) q.pop_front();
+}
+
+void plot(const char* label, const std::deque<float>& q, const char* unit) {
+    std::vector<float> v(q.begin(), q.end());
+    char overlay[64] = "";
+    if (!v.empty()) std::snprintf(overlay, sizeof overlay, "%.4g %s", v.back(), unit);
+    ImGui::PlotLines(label, v.data(), static_cast<int>(v.size()), 0, overlay, FLT_MAX, FLT_MAX, ImVec2(0, 56));
+}
+
+// Stage number of "not implemented: exercise N.M name" (0 if none).
+int stageOfMessage(const std::string& msg) {
+    const auto p = msg.find("exercise ");
+    if (p == std::string::npos) return 0;
+    return std::atoi(msg.c_str() + p + 9);
+}
+
+// A slider on a double; true when the user let go of it after a change.
+bool sliderD(const char* label, double& v, double lo, double hi, const char* fmt, bool log = false) {
+    float f = static_cast<float>(v);
+    ImGui::SliderFloat(label, &f, static_cast<float>(lo), static_cast<float>(hi), fmt,
+                       log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+    if (ImGui::IsItemActive() || ImGui::IsItemDeactivatedAfterEdit()) v = f;
+    return ImGui::IsItemDeactivatedAfterEdit();
+}
+}  // namespace
+
+std::vector<StageInfo> parseStageCode(const std::string& spec) {
+    std::vector<StageInfo> out;
+    size_t start = 0;
+    while (start < spec.size()) {
+        size_t end = spec.find(';', start);
+        if (end == std::string::npos) end = spec.size();
+        const std::string item = spec.substr(start, end - start);
+        const auto eq = item.find('=');
+        if (eq != std::string::npos) out.push_back({item.substr(0, eq), item.substr(eq + 1) == "reference"});
+        start = end + 1;
+    }
+    return out;
+}
+
+void setupImGuiStyle() {
+    ImGui::StyleColorsLight();
+    ImGuiStyle& st = ImGui::GetStyle();
+    st.WindowRounding = 6;
+    st.FrameRounding = 4;
+    st.GrabRounding = 4;
+    st.WindowBorderSize = 0;
+    st.Colors[ImGuiCol_WindowBg].w = 0.92f;
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini next to the user's files
+    // A readable font when Debian's fonts-dejavu-core is installed; else ImGui's built-in one.
+    const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    if (io.Fonts->Fonts.empty() && std::filesystem::exists(font)) io.Fonts->AddFontFromFileTTF(font, 15.0f);
+}
+
+DrawData waveCloth(int n, double t) {
+    ClothSpec c;
+    c.nx = c.ny = n;
+    c.width = c.height = 1.0;
+    c.origin = Vec3(-0.5, 0.5, 0);
+    for (int i = 0; i < n; ++i) c.pins.push_back(i);
+    const State rest = makeGridState(c);
+    State s = rest;
+    for (int i = 0; i < s.size(); ++i) {
+        const double u = rest.x(0, i) + 0.5, v = 0.5 - rest.x(1, i);
+        s.x(2, i) = 0.12 * v * std::sin(6.0 * u - 4.0 * t) + 0.05 * v * v * std::sin(9.0 * v - 3.0 * t);
+    }
+    s.t = t;
+    DrawData d = makeClothDrawData(c, s, rest);
+    d.title = "benchmark: " + std::to_string(n) + "x" + std::to_string(n) + " cloth, travelling wave";
+    return d;
+}
+
+App::App(const AppOptions& options) : options_(options) {
+    stages_ = parseStageCode(CLOTHLAB_STAGE_CODE);
+    std::error_code ec;
+    if (!options_.scenes_dir.empty())
+        for (const auto& e : std::filesystem::directory_iterator(options_.scenes_dir, ec))
+            if (e.path().extension() == ".json") scenes_.push_back(e.path().string());
+    std::sort(scenes_.begin(), scenes_.end());
+    playing_ = options_.play;
+    view_.edges = false;
+    const std::string first = !options_.scene.empty() ? options_.scene : (scenes_.empty() ? "" : scenes_.front());
+    if (first.empty()) message_ = "no scene: pass a scene file or a folder with scenes";
+    else load(first);
+}
+
+bool App::load(const std::string& path) {
+    try {
+        original_ = loadScene(path);
+    } catch (const InputError& e) {
+        message_ = std::string("error: ") + e.what();
+        return false;
+    }
+    scene_path_ = path;
+    scene_ = original_;
+    all_colliders_ = original_.colliders;
+    collider_on_.assign(all_colliders_.size(), 1);
+    user_pins_.clear();
+    energy_.clear(), error_.clear(), step_ms_.clear();
+    camera_set_ = false;
+    view_.edges = options_.edges < 0 ? (scene_.model != "cloth" && options_.wave_grid < 2) : options_.edges == 1;
+    rebuild(false);
+    return true;
+}
+
+void App::rebuild(bool keep_state) {
+    State old;
+    if (sim_) old = sim_->state();
+    scene_.colliders.clear();
+    for (size_t i = 0; i < all_colliders_.size(); ++i)
+        if (collider_on_[i]) scene_.colliders.push_back(all_colliders_[i]);
+    sim_.reset();
+    message_.clear();
+    grabbed_ = -1;
+    try {
+        sim_ = makeSimulation(scene_);
+    } catch (const InputError& e) {
+        message_ = std::string("not available: ") + e.what();
+    } catch (const NotImplemented& e) {
+        message_ = e.what();
+        stub_hit_ = e.what();
+    } catch (const std::exception& e) {
+        message_ = std::string("error: ") + e.what();
+    }
+    if (!sim_) return;
+    State& st = sim_->state();
+    if (keep_state && old.size() == st.size()) {
+        st.x = old.x;
+        st.v = old.v;
+        st.t = old.t;
+    }
+    for (const auto& [i, pinned] : user_pins_)
+        if (i < st.size()) {
+            if (pinned) st.w[i] = 0.0;
+            else if (st.w[i] == 0.0) st.w[i] = 1.0;
+        }
+    if (!keep_state) energy_.clear(), error_.clear(), step_ms_.clear();
+}
+
+DrawData App::currentDrawData() const {
+    if (options_.wave_grid > 1) return waveCloth(options_.wave_grid, wave_t_);
+    return sim_ ? makeDrawData(*sim_) : makeDrawData(scene_);
+}
+
+void App::safeStep() {
+    if (!sim_) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        sim_->step();
+    } catch (const NotImplemented& e) {
+        message_ = e.what();
+        stub_hit_ = e.what();
+        playing_ = false;
+        return;
+    } catch (const std::exception& e) {
+        message_ = std::string("error: ") + e.what();
+        playing_ = false;
+        return;
+    }
+    last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (!sim_->state().isFinite()) {
+        message_ = "unstable at t = " + std::to_string(sim_->state().t) + " s: reduce dt or stiffness, then Reset";
+        playing_ = false;
+    }
+}
+
+void App::stepOnce() {
+    safeStep();
+    pushSample();
+}
+
+void App::advance(double frame_seconds) {
+    if (!playing_ || !sim_) return;
+    const double dt = scene_.solver.dt;
+    long long steps = std::max<long long>(1, std::llround(speed_ * frame_seconds / dt));
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long long k = 0; k < steps && playing_; ++k) {
+        if (grabbed_ >= 0) sim_->state().v.col(grabbed_).setZero();
+        safeStep();
+        // Keep the frame interactive: at most 40 ms of stepping per frame (the simulation then runs slower than real time).
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > 0.04) break;
+    }
+    pushSample();
+}
+
+void App::pushSample() {
+    if (!sim_) return;
+    std::vector<Metric> m;
+    try {
+        m = sim_->metrics();
+    } catch (const std::exception&) {
+        return;
+    }
+    double energy = NAN, err = NAN;
+    for (const Metric& x : m) {
+        if (x.name == "energy") energy = x.value;
+        const bool is_error = x.name == "error" || x.name.find("constraint") != std::string::npos ||
+                              x.name.find("strain") != std::string::npos;
+        if (is_error && std::isnan(err)) err = x.value, error_name_ = x.name + " [" + x.unit + "]";
+    }
+    if (std::isnan(err))
+        for (const Metric& x : m)
+            if (x.name == "energy_drift") err = x.value, error_name_ = "energy drift [J]";
+    if (!std::isnan(energy)) push(energy_, energy);
+    if (!std::isnan(err)) push(error_, err);
+    push(step_ms_, last_step_ms_);
+}
+
+void App::handleMouse(int width, int height) {
+    ImGuiIO& io = ImGui::GetIO();
+    const double sx = io.DisplaySize.x > 0 ? width / io.DisplaySize.x : 1.0;
+    const double sy = io.DisplaySize.y > 0 ? height / io.DisplaySize.y : 1.0;
+    const double px = io.MousePos.x * sx, py = io.MousePos.y * sy;
+    const bool over_ui = io.WantCaptureMouse && grabbed_ < 0 && !orbiting_;
+    if (!over_ui) {
+        if (io.MouseWheel != 0) cam_.zoom(std::pow(0.9, io.MouseWheel));
+        const bool pin_key = !io.WantCaptureKeyboard && ImGui::IsKeyPressed('P', false);
+        if ((ImGui::IsMouseClicked(1) || pin_key) && sim_) {
+            const int i = pickParticle(makeDrawData(*sim_), cam_, px, py, width, height, 14);
+            if (i >= 0) {
+                State& st = sim_->state();
+                const bool pin = st.w[i] != 0.0;
+                user_pins_[i] = pin;
+                if (pin) st.w[i] = 0.0, st.v.col(i).setZero();
+                else {
+                    // Unpin with the mean inverse mass of the free particles (1/kg).
+                    double sum = 0;
+                    int n = 0;
+                    for (int k = 0; k < st.size(); ++k)
+                        if (st.w[k] > 0) sum += st.w[k], ++n;
+                    st.w[i] = n ? sum / n : 1.0;
+                }
+            }
+        }
+        if (ImGui::IsMouseClicked(0)) {
+            const int i = sim_ ? pickParticle(makeDrawData(*sim_), cam_, px, py, width, height, 14) : -1;
+            if (i >= 0) {
+                grabbed_ = i;
+                grabbed_w_ = sim_->state().w[i];
+                grab_depth_ = cam_.project(sim_->state().x.col(i), width, height).z();
+            } else {
+                orbiting_ = true;
+            }
+        }
+    }
+    if (grabbed_ >= 0 && sim_) {
+        State& st = sim_->state();
+        if (ImGui::IsMouseDown(0)) {
+            st.x.col(grabbed_) = cam_.unproject(px, py, grab_depth_, width, height);
+            st.v.col(grabbed_).setZero();
+            st.w[grabbed_] = 0.0;  // held by the mouse: infinite mass while dragged
+        } else {
+            auto it = user_pins_.find(grabbed_);
+            if (!(it != user_pins_.end() && it->second)) st.w[grabbed_] = grabbed_w_;
+            grabbed_ = -1;
+        }
+    }
+    if (orbiting_) {
+        if (ImGui::IsMouseDown(0)) cam_.orbit(-io.MouseDelta.x * 0.008, io.MouseDelta.y * 0.008);
+        else orbiting_ = false;
+    }
+    if (!io.WantCaptureKeyboard) {
+        if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) playing_ = !playing_;
+        if (ImGui::IsKeyPressed('S', false)) stepOnce();
+        if (ImGui::IsKeyPressed('R', false)) rebuild(false);
+    }
+}
+
+void App::frame(int width, int height) {
+    const double frame_seconds = std::min(1.0 / 20, static_cast<double>(ImGui::GetIO().DeltaTime));
+    advance(frame_seconds);
+    if (playing_) wave_t_ += frame_seconds;
+    DrawData d = currentDrawData();
+    if (!camera_set_) {
+        Vec3 lo, hi;
+        drawBounds(d, lo, hi);
+        // Leave room for the motion: a hanging cloth or chain swings below its pins.
+        const double reach = (hi - lo).maxCoeff();
+        if (scene_.model != "spring") lo.y() -= 0.5 * reach;
+        const double panel = 360.0;
+        cam_ = sceneCamera(scene_, lo, hi, double(width - panel) / height);
+        // Shift the view so the scene sits in the part of the window right of the panel.
+        const double shift = (panel / 2) / width * 2;  // in NDC
+        const Vec3 right = (cam_.eye - cam_.target).cross(cam_.up).normalized() * -1;
+        const double dist = (cam_.eye - cam_.target).norm();
+        const double half_w = dist * std::tan(cam_.fovy * 3.14159265358979 / 360) * double(width) / height;
+        cam_.target -= right * shift * half_w;
+        cam_.eye -= right * shift * half_w;
+        view_.ground_y = lo.y() - 0.05 * std::max(reach, 0.2);
+        camera_set_ = true;
+    }
+    handleMouse(width, height);
+    d = currentDrawData();
+    renderer_.draw(d, cam_, view_, width, height);
+    panel(width, height);
+    drawOverlay(d, view_, 360.0f);
+}
+
+void App::panel(int /*width*/, int height) {
+    const float scale = ImGui::GetIO().DisplaySize.y > 0 ? ImGui::GetIO().DisplaySize.y / height : 1.0f;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(340, height * scale - 16), ImGuiCond_Always);
+    ImGui::Begin("clothlab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (!message_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+        ImGui::TextWrapped("%s", message_.c_str());
+        ImGui::PopStyleColor();
+    }
+    panelScene();
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panelParameters();
+    if (ImGui::CollapsingHeader("View")) panelView();
+    if (ImGui::CollapsingHeader("Stages", ImGuiTreeNodeFlags_DefaultOpen)) panelStages();
+    if (ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) panelPlots();
+    ImGui::Separator();
+    ImGui::TextDisabled("left drag: particle / orbit   wheel: zoom");
+    ImGui::TextDisabled("right click or P: pin/unpin   space: play");
+    ImGui::End();
+}
+
+void App::panelScene() {
+    namespace fs = std::filesystem;
+    const std::string current = fs::path(scene_path_).filename().string();
+    if (ImGui::BeginCombo("scene", current.c_str())) {
+        for (const std::string& s : scenes_)
+            if (ImGui::Selectable(fs::path(s).filename().string().c_str(), s == scene_path_)) load(s);
+        ImGui::EndCombo();
+    }
+    if (!scene_.description.empty()) ImGui::TextWrapped("%s", scene_.description.c_str());
+    if (ImGui::BeginCombo("method", scene_.solver.method.c_str())) {
+        for (const std::string& m : solverMethods())
+            if (ImGui::Selectable(m.c_str(), m == scene_.solver.method)) {
+                scene_.solver.method = m;
+                rebuild(true);
+            }
+        ImGui::EndCombo();
+    }
+    if (ImGui::Button(playing_ ? "Pause" : "Play")) playing_ = !playing_;
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) stepOnce();
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) rebuild(false);
+    ImGui::SameLine();
+    ImGui::Text("t = %.3f s", sim_ ? sim_->state().t : 0.0);
+    float sp = static_cast<float>(speed_);
+    if (ImGui::SliderFloat("speed", &sp, 0.01f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) speed_ = sp;
+    if (sim_) ImGui::Text("%d particles, %zu edges, step %.3f ms", sim_->state().size(), sim_->edges().size(), last_step_ms_);
+}
+
+void App::panelParameters() {
+    bool changed = false;
+    SolverSpec& sv = scene_.solver;
+    changed |= sliderD("dt [s]", sv.dt, 1e-5, 0.05, "%.5f", true);
+    const bool position_based = sv.method == "pbd" || sv.method == "xpbd";
+    if (position_based) {
+        ImGui::SliderInt("iterations", &sv.iterations, 1, 100);
+        changed |= ImGui::IsItemDeactivatedAfterEdit();
+        ImGui::SliderInt("substeps", &sv.substeps, 1, 50);
+        changed |= ImGui::IsItemDeactivatedAfterEdit();
+    }
+    if (scene_.model == "spring") {
+        changed |= sliderD("k [N/m]", scene_.spring.k, 1, 1e4, "%.1f", true);
+        changed |= sliderD("kd [Ns/m]", scene_.spring.kd, 0, 10, "%.3f");
+    } else if (scene_.model == "chain") {
+        changed |= sliderD("k [N/m]", scene_.chain.k, 1, 1e5, "%.1f", true);
+        changed |= sliderD("kd [Ns/m]", scene_.chain.kd, 0, 10, "%.3f");
+    } else {
+        struct G { const char* name; SpringGroup* g; } groups[] = {{"structural", &scene_.springs.structural},
+                                                              {"shear", &scene_.springs.shear},
+                                                              {"bending", &scene_.springs.bending}};
+        if (!position_based)
+            for (auto& [name, g] : groups) {
+                ImGui::PushID(name);
+                changed |= ImGui::Checkbox("##on", &g->enabled);
+                ImGui::SameLine();
+                changed |= sliderD((std::string(name) + " k").c_str(), g->k, 1, 1e5, "%.0f", true);
+                ImGui::PopID();
+            }
+        struct C { const char* name; ConstraintGroup* g; } cons[] = {{"distance", &scene_.constraints.distance},
+                                                                 {"bending c.", &scene_.constraints.bending}};
+        if (position_based)
+            for (auto& [name, g] : cons) {
+                ImGui::PushID(name);
+                changed |= ImGui::Checkbox("##on", &g->enabled);
+                ImGui::SameLine();
+                if (sv.method == "xpbd") changed |= sliderD((std::string(name) + " alpha").c_str(), g->compliance, 0, 1e-2, "%.2e");
+                else changed |= sliderD((std::string(name) + " k").c_str(), g->stiffness, 0, 1, "%.3f");
+                ImGui::PopID();
+            }
+    }
+    changed |= sliderD("damping", scene_.forces.damping, 0, position_based ? 1.0 : 5.0, "%.3f");
+    float wind[3] = {float(scene_.forces.wind.x()), float(scene_.forces.wind.y()), float(scene_.forces.wind.z())};
+    ImGui::SliderFloat3("wind [m/s]", wind, -20, 20, "%.1f");
+    if (ImGui::IsItemActive() || ImGui::IsItemDeactivatedAfterEdit()) scene_.forces.wind = Vec3(wind[0], wind[1], wind[2]);
+    changed |= ImGui::IsItemDeactivatedAfterEdit();
+    for (size_t i = 0; i < all_colliders_.size(); ++i) {
+        const Collider& c = all_colliders_[i];
+        const std::string label = std::string(c.type == Collider::Type::Plane ? "plane " : "sphere ") + std::to_string(i);
+        bool on = collider_on_[i];
+        if (ImGui::Checkbox(label.c_str(), &on)) collider_on_[i] = on, changed = true;
+        if (i + 1 < all_colliders_.size()) ImGui::SameLine();
+    }
+    if (changed) rebuild(true);
+}
+
+void App::panelView() {
+    ImGui::Checkbox("surface", &view_.surface);
+    ImGui::SameLine();
+    ImGui::Checkbox("edges", &view_.edges);
+    ImGui::SameLine();
+    ImGui::Checkbox("by strain", &view_.color_by_strain);
+    for (int k = 0; k < 4; ++k) {
+        ImGui::Checkbox(edgeKindName(static_cast<EdgeKind>(k)), &view_.show_kind[k]);
+        if (k < 3) ImGui::SameLine();
+    }
+    ImGui::Checkbox("particles", &view_.particles);
+    ImGui::SameLine();
+    ImGui::Checkbox("colliders", &view_.colliders);
+    ImGui::SameLine();
+    ImGui::Checkbox("ground", &view_.ground);
+    ImGui::SameLine();
+    ImGui::Checkbox("legend", &view_.legend);
+    float range = static_cast<float>(view_.strain_range * 100);
+    if (ImGui::SliderFloat("strain range", &range, 0.1f, 50.0f, "%.1f %%", ImGuiSliderFlags_Logarithmic))
+        view_.strain_range = range / 100;
+    if (ImGui::Button("Fit camera")) camera_set_ = false;
+}
+
+void App::panelStages() {
+    if (stages_.empty()) ImGui::TextDisabled("(no stage information in this build)");
+    const int hit = stageOfMessage(stub_hit_);
+    for (const StageInfo& s : stages_) {
+        ImGui::Text("%-14s", s.dir.c_str());
+        ImGui::SameLine(150);
+        if (s.reference) ImGui::TextColored(ImVec4(0.2f, 0.55f, 0.25f, 1), "reference");
+        else ImGui::TextColored(ImVec4(0.2f, 0.4f, 0.85f, 1), "student");
+        if (hit > 0 && std::atoi(s.dir.c_str()) == hit) {
+            ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+            ImGui::TextWrapped("  %s", stub_hit_.c_str());
+            ImGui::PopStyleColor();
+        }
+    }
+}
+
+void App::panelPlots() {
+    plot("energy", energy_, "J");
+    plot(error_name_.empty() ? "error" : error_name_.c_str(), error_, "");
+    plot("step [ms]", step_ms_, "ms");
+}
+
+}  // namespace clothlab

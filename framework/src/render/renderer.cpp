@@ -1,0 +1,401 @@
+// The OpenGL renderer (fixed-function pipeline; works in OSMesa and in a GLFW window alike).
+#include "clothlab/render/renderer.h"
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace clothlab {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void setMaterial(GLenum face, const Eigen::Vector3f& c, float spec, float shininess) {
+    const float amb[4] = {0.35f * c[0], 0.35f * c[1], 0.35f * c[2], 1};
+    const float dif[4] = {c[0], c[1], c[2], 1};
+    const float sp[4] = {spec, spec, spec, 1};
+    glMaterialfv(face, GL_AMBIENT, amb);
+    glMaterialfv(face, GL_DIFFUSE, dif);
+    glMaterialfv(face, GL_SPECULAR, sp);
+    glMaterialf(face, GL_SHININESS, shininess);
+}
+
+// A unit sphere as triangle strips (lat-long), drawn at centre c with radius r.
+void drawSphere(const Vec3& c, double r, int slices = 32, int stacks = 16) {
+    for (int i = 0; i < stacks; ++i) {
+        const double t0 = kPi * i / stacks - kPi / 2, t1 = kPi * (i + 1) / stacks - kPi / 2;
+        glBegin(GL_TRIANGLE_STRIP);
+        for (int j = 0; j <= slices; ++j) {
+            const double p = 2 * kPi * j / slices;
+            for (double t : {t0, t1}) {
+                const Vec3 n(std::cos(t) * std::cos(p), std::sin(t), std::cos(t) * std::sin(p));
+                glNormal3d(n.x(), n.y(), n.z());
+                const Vec3 v = c + r * n;
+                glVertex3d(v.x(), v.y(), v.z());
+            }
+        }
+        glEnd();
+    }
+}
+
+// An orthonormal pair spanning the plane with normal n.
+void planeAxes(const Vec3& n, Vec3& a, Vec3& b) {
+    a = (std::abs(n.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)).cross(n).normalized();
+    b = n.cross(a);
+}
+
+void lights() {
+    // Light positions in eye space (the modelview is the identity here): the light follows the camera.
+    const float key[4] = {-0.35f, 0.75f, 0.9f, 0}, keyc[4] = {0.80f, 0.80f, 0.78f, 1};
+    const float fill[4] = {0.6f, -0.1f, 0.5f, 0}, fillc[4] = {0.30f, 0.32f, 0.36f, 1};
+    const float spec[4] = {0.5f, 0.5f, 0.5f, 1}, none[4] = {0, 0, 0, 1};
+    const float ambient[4] = {0.25f, 0.25f, 0.27f, 1};
+    glLightfv(GL_LIGHT0, GL_POSITION, key);
+    glLightfv(GL_LIGHT0, GL_DIFFUSE, keyc);
+    glLightfv(GL_LIGHT0, GL_SPECULAR, spec);
+    glLightfv(GL_LIGHT0, GL_AMBIENT, none);
+    glLightfv(GL_LIGHT1, GL_POSITION, fill);
+    glLightfv(GL_LIGHT1, GL_DIFFUSE, fillc);
+    glLightfv(GL_LIGHT1, GL_SPECULAR, none);
+    glLightfv(GL_LIGHT1, GL_AMBIENT, none);
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_LIGHT1);
+}
+
+}  // namespace
+
+Eigen::Vector3f edgeKindColor(EdgeKind kind) {
+    switch (kind) {
+        case EdgeKind::Single: return {0.15f, 0.17f, 0.22f};
+        case EdgeKind::Structural: return {0.10f, 0.35f, 0.85f};
+        case EdgeKind::Shear: return {0.05f, 0.60f, 0.25f};
+        case EdgeKind::Bending: return {0.75f, 0.15f, 0.65f};
+    }
+    return {0, 0, 0};
+}
+
+Eigen::Vector3f strainColor(double strain, double range) {
+    const float s = static_cast<float>(std::clamp(strain / range, -1.0, 1.0));
+    const Eigen::Vector3f mid(0.85f, 0.85f, 0.85f), red(0.85f, 0.10f, 0.10f), blue(0.10f, 0.30f, 0.90f);
+    return s >= 0 ? Eigen::Vector3f(mid + s * (red - mid)) : Eigen::Vector3f(mid - s * (blue - mid));
+}
+
+void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height) {
+    glViewport(0, 0, width, height);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0.93f, 0.94f, 0.96f, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_TEXTURE_2D);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+
+    // Background: a soft vertical gradient.
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glBegin(GL_QUADS);
+    glColor3f(0.97f, 0.97f, 0.98f);
+    glVertex2f(-1, -1);
+    glVertex2f(1, -1);
+    glColor3f(0.78f, 0.83f, 0.90f);
+    glVertex2f(1, 1);
+    glVertex2f(-1, 1);
+    glEnd();
+
+    lights();  // in eye space, before the view matrix
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_NORMALIZE);
+    glShadeModel(GL_SMOOTH);
+    glMatrixMode(GL_PROJECTION);
+    const Eigen::Matrix4d P = cam.projection(double(width) / height), V = cam.view();
+    glLoadMatrixd(P.data());
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixd(V.data());
+
+    // Size of what is seen, for grid spacing, marker and sphere sizes.
+    const double scale = (cam.eye - cam.target).norm() * std::sin(cam.fovy * kPi / 360);
+
+    // Ground: a plane collider with an upward normal, else a grid below the lowest point.
+    bool ground_is_plane = false;
+    double gy = opt.ground_y;
+    for (const Collider& c : d.colliders)
+        if (c.type == Collider::Type::Plane && c.normal.y() > 0.99) ground_is_plane = true, gy = c.point.y();
+    if (std::isnan(gy)) {
+        gy = d.x.cols() ? d.x.row(1).minCoeff() : 0.0;
+        for (const Collider& c : d.colliders)
+            if (c.type == Collider::Type::Sphere) gy = std::min(gy, c.point.y() - c.radius);
+        gy -= 0.15 * scale;
+    }
+    const double cell = std::pow(10.0, std::floor(std::log10(scale * 0.5)));
+    const double gx0 = std::round(cam.target.x() / cell) * cell, gz0 = std::round(cam.target.z() / cell) * cell;
+    const int ncell = static_cast<int>(std::ceil(3.0 * scale / cell));
+    if (opt.ground) {
+        if (ground_is_plane && opt.colliders) {
+            glColor3f(0.86f, 0.87f, 0.88f);
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(1, 1);
+            glBegin(GL_QUADS);
+            const double e = ncell * cell;
+            glVertex3d(gx0 - e, gy, gz0 - e);
+            glVertex3d(gx0 - e, gy, gz0 + e);
+            glVertex3d(gx0 + e, gy, gz0 + e);
+            glVertex3d(gx0 + e, gy, gz0 - e);
+            glEnd();
+            glDisable(GL_POLYGON_OFFSET_FILL);
+        }
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glLineWidth(1.0f);
+        glBegin(GL_LINES);
+        for (int k = -ncell; k <= ncell; ++k) {
+            const float a = (k % 10 == 0) ? 0.45f : (k % 5 == 0 ? 0.30f : 0.16f);
+            glColor4f(0.35f, 0.38f, 0.45f, a);
+            glVertex3d(gx0 + k * cell, gy, gz0 - ncell * cell);
+            glVertex3d(gx0 + k * cell, gy, gz0 + ncell * cell);
+            glVertex3d(gx0 - ncell * cell, gy, gz0 + k * cell);
+            glVertex3d(gx0 + ncell * cell, gy, gz0 + k * cell);
+        }
+        glEnd();
+        // A soft shadow of the cloth and the particles straight down on the ground.
+        glDepthMask(GL_FALSE);
+        glColor4f(0.1f, 0.12f, 0.18f, 0.12f);
+        const double sy = gy + 1e-3 * scale;
+        if (!d.triangles.empty()) {
+            glBegin(GL_TRIANGLES);
+            for (const auto& t : d.triangles)
+                for (int k = 0; k < 3; ++k) glVertex3d(d.x(0, t[k]), sy, d.x(2, t[k]));
+            glEnd();
+        } else {
+            for (int i = 0; i < d.x.cols(); ++i) {
+                glBegin(GL_TRIANGLE_FAN);
+                glVertex3d(d.x(0, i), sy, d.x(2, i));
+                for (int k = 0; k <= 24; ++k)
+                    glVertex3d(d.x(0, i) + 0.05 * scale * std::cos(2 * kPi * k / 24), sy,
+                               d.x(2, i) + 0.05 * scale * std::sin(2 * kPi * k / 24));
+                glEnd();
+            }
+        }
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+
+    // Colliders.
+    if (opt.colliders) {
+        glEnable(GL_LIGHTING);
+        for (const Collider& c : d.colliders) {
+            if (c.type == Collider::Type::Sphere) {
+                setMaterial(GL_FRONT_AND_BACK, {0.55f, 0.60f, 0.66f}, 0.35f, 40);
+                drawSphere(c.point, std::max(c.radius - 0.5e-3 * scale, 0.0), 48, 24);
+            } else if (!(ground_is_plane && c.normal.y() > 0.99)) {
+                Vec3 a, b;
+                planeAxes(c.normal, a, b);
+                const Vec3 o = c.point + (cam.target - c.point).dot(a) * a + (cam.target - c.point).dot(b) * b;
+                const double e = 1.5 * scale;
+                setMaterial(GL_FRONT_AND_BACK, {0.70f, 0.72f, 0.75f}, 0.1f, 10);
+                glBegin(GL_QUADS);
+                glNormal3d(c.normal.x(), c.normal.y(), c.normal.z());
+                const Vec3 quad[4] = {o - e * a - e * b, o + e * a - e * b, o + e * a + e * b, o - e * a + e * b};
+                for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
+                glEnd();
+            }
+        }
+        glDisable(GL_LIGHTING);
+    }
+
+    if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
+    if (opt.edges || d.triangles.empty()) drawEdges(d, opt, scale);
+    drawParticles(d, opt, scale);
+    glFinish();
+}
+
+void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
+    const int n = static_cast<int>(d.x.cols());
+    // Vertex normals: area-weighted sum of the face normals around each particle.
+    Matrix3X nrm = Matrix3X::Zero(3, n);
+    for (const auto& t : d.triangles) {
+        const Vec3 fn = (d.x.col(t[1]) - d.x.col(t[0])).cross(d.x.col(t[2]) - d.x.col(t[0]));
+        for (int k = 0; k < 3; ++k) nrm.col(t[k]) += fn;
+    }
+    buf_.resize(3 * static_cast<size_t>(n));
+    nrm_.resize(3 * static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const double len = nrm.col(i).norm();
+        for (int k = 0; k < 3; ++k) {
+            buf_[3 * i + k] = static_cast<float>(d.x(k, i));
+            nrm_[3 * i + k] = static_cast<float>(len > 0 ? nrm(k, i) / len : (k == 2));
+        }
+    }
+    idx_.clear();
+    for (const auto& t : d.triangles)
+        for (int k = 0; k < 3; ++k) idx_.push_back(static_cast<unsigned>(t[k]));
+
+    const bool textured = d.uv.cols() == n;
+    if (textured) {
+        if (texture_ == 0) {
+            // A two-tone checker (8 x 8 squares) that makes stretching and folds visible.
+            const int S = 64;
+            std::vector<unsigned char> tex(S * S * 3);
+            for (int y = 0; y < S; ++y)
+                for (int x = 0; x < S; ++x) {
+                    const bool dark = ((x / 8) + (y / 8)) % 2;
+                    for (int k = 0; k < 3; ++k) tex[3 * (y * S + x) + k] = dark ? 214 : 255;
+                }
+            GLuint id = 0;
+            glGenTextures(1, &id);
+            texture_ = id;
+            glBindTexture(GL_TEXTURE_2D, texture_);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, S, S, 0, GL_RGB, GL_UNSIGNED_BYTE, tex.data());
+        }
+        std::vector<float> uv(2 * static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) uv[2 * i] = static_cast<float>(d.uv(0, i)), uv[2 * i + 1] = static_cast<float>(d.uv(1, i));
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glEnable(GL_TEXTURE_2D);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoordPointer(2, GL_FLOAT, 0, uv.data());
+        glEnable(GL_LIGHTING);
+        setMaterial(GL_FRONT, {0.95f, 0.52f, 0.22f}, 0.25f, 24);
+        setMaterial(GL_BACK, {0.30f, 0.52f, 0.85f}, 0.15f, 24);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1, 1);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glVertexPointer(3, GL_FLOAT, 0, buf_.data());
+        glNormalPointer(GL_FLOAT, 0, nrm_.data());
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx_.size()), GL_UNSIGNED_INT, idx_.data());
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+        glDisable(GL_TEXTURE_2D);
+    } else {
+        glEnable(GL_LIGHTING);
+        setMaterial(GL_FRONT, {0.95f, 0.52f, 0.22f}, 0.25f, 24);
+        setMaterial(GL_BACK, {0.30f, 0.52f, 0.85f}, 0.15f, 24);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1, 1);
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glVertexPointer(3, GL_FLOAT, 0, buf_.data());
+        glNormalPointer(GL_FLOAT, 0, nrm_.data());
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx_.size()), GL_UNSIGNED_INT, idx_.data());
+    }
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_LIGHTING);
+}
+
+void Renderer::drawEdges(const DrawData& d, const RenderOptions& opt, double scale) {
+    glDisable(GL_LIGHTING);
+    glLineWidth(opt.line_width);
+    glBegin(GL_LINES);
+    for (size_t e = 0; e < d.edges.size(); ++e) {
+        const EdgeKind kind = d.edge_kind.size() == d.edges.size() ? d.edge_kind[e] : EdgeKind::Single;
+        if (!opt.show_kind[static_cast<int>(kind)]) continue;
+        const Eigen::Vector3f c = opt.color_by_strain && d.rest_length.size() == d.edges.size()
+                                      ? strainColor(d.strain(static_cast<int>(e)), opt.strain_range)
+                                      : edgeKindColor(kind);
+        glColor3f(c[0], c[1], c[2]);
+        const Vec3 a = d.x.col(d.edges[e][0]), b = d.x.col(d.edges[e][1]);
+        if (kind == EdgeKind::Single && d.edges.size() <= 200) {
+            // Draw a lone spring as a coil: a helix around the segment from a to b.
+            const Vec3 axis = b - a;
+            const double len = axis.norm();
+            if (len <= 0) continue;
+            Vec3 u, v;
+            planeAxes(axis / len, u, v);
+            const bool lone = d.edges.size() == 1;
+            const double r = std::min(0.035 * scale, (lone ? 0.25 : 0.15) * d.rest_length[e]);
+            const int turns = lone ? 12 : 5, seg = turns * 12;
+            Vec3 prev = a;
+            for (int k = 1; k <= seg; ++k) {
+                const double s = double(k) / seg;
+                const double env = (s < 0.08 || s > 0.92) ? 0.0 : 1.0;  // straight ends
+                const double phi = 2 * kPi * turns * s;
+                const Vec3 p = a + s * axis + env * r * (std::cos(phi) * u + std::sin(phi) * v);
+                glVertex3d(prev.x(), prev.y(), prev.z());
+                glVertex3d(p.x(), p.y(), p.z());
+                prev = p;
+            }
+        } else {
+            glVertex3d(a.x(), a.y(), a.z());
+            glVertex3d(b.x(), b.y(), b.z());
+        }
+    }
+    glEnd();
+    glLineWidth(1.0f);
+}
+
+void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double scale) {
+    const int n = static_cast<int>(d.x.cols());
+    const bool few = n <= 400 && d.triangles.empty();
+    if (few) {
+        // Few particles (spring, chain): lit spheres, pinned ones as red anchors.
+        glEnable(GL_LIGHTING);
+        for (int i = 0; i < n; ++i) {
+            const bool pinned = d.w.size() == n && d.w[i] == 0;
+            if (pinned && !opt.pinned) continue;
+            setMaterial(GL_FRONT_AND_BACK, pinned ? Eigen::Vector3f(0.85f, 0.12f, 0.10f) : Eigen::Vector3f(0.95f, 0.55f, 0.15f), 0.5f, 50);
+            drawSphere(d.x.col(i), (pinned ? 0.035 : (n > 3 ? 0.045 : 0.08)) * scale, 24, 12);
+        }
+        // The analytic solution as a translucent green ghost.
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        const float amb[4] = {0.1f, 0.3f, 0.15f, 0.45f}, dif[4] = {0.25f, 0.75f, 0.35f, 0.45f};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, amb);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, dif);
+        for (const Vec3& g : d.ghosts) drawSphere(g, (n > 3 ? 0.05 : 0.09) * scale, 24, 12);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+        glDisable(GL_LIGHTING);
+        return;
+    }
+    glEnable(GL_POINT_SMOOTH);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    if (opt.particles && n <= 20000) {
+        glPointSize(n > 2000 ? 2.0f : 3.5f);
+        glColor3f(0.20f, 0.20f, 0.25f);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < n; ++i) glVertex3d(d.x(0, i), d.x(1, i), d.x(2, i));
+        glEnd();
+    }
+    if (opt.pinned && d.w.size() == n) {
+        glPointSize(9.0f);
+        glColor3f(0.85f, 0.10f, 0.10f);
+        glBegin(GL_POINTS);
+        for (int i = 0; i < n; ++i)
+            if (d.w[i] == 0) glVertex3d(d.x(0, i), d.x(1, i), d.x(2, i));
+        glEnd();
+    }
+    glDisable(GL_BLEND);
+    glDisable(GL_POINT_SMOOTH);
+    glPointSize(1.0f);
+}
+
+Image readPixels(int width, int height) {
+    Image img;
+    img.width = width;
+    img.height = height;
+    img.rgba.resize(4 * static_cast<size_t>(width) * height);
+    std::vector<unsigned char> raw(img.rgba.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
+    const size_t row = 4 * static_cast<size_t>(width);
+    for (int y = 0; y < height; ++y)
+        std::copy_n(&raw[(height - 1 - y) * row], row, &img.rgba[y * row]);
+    return img;
+}
+
+}  // namespace clothlab

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# clothlab-render on good and bad input: frames of a scene, one error line on bad input, the app screenshot.
+set -u
+exe=$1; check=$2; root=$3; tmp=$4
+rm -rf "$tmp"; mkdir -p "$tmp"
+fail=0
+bad() { echo "FAIL: $*"; fail=1; }
+
+# 0.2 s at 20 fps: frames 0..4.
+if "$exe" render "$root/scenes/spring.json" --seconds 0.2 --fps 20 --size 320x240 --out "$tmp/spring" --quiet >"$tmp/out" 2>&1; then
+  n=$(ls "$tmp/spring"/frame_*.png 2>/dev/null | wc -l)
+  [[ $n -eq 5 ]] || bad "render spring: want 5 frames, got $n"
+  grep -q "ms per frame" "$tmp/out" || bad "render spring: no timing line: $(cat "$tmp/out")"
+else
+  bad "render spring failed: $(tail -5 "$tmp/out")"
+fi
+
+# Bad input: one 'error: <file>: <field>: <reason>' line and a non-zero exit.
+expect_error() {
+  local name=$1 pattern=$2; shift 2
+  "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; local code=$?
+  if [[ $code -eq 0 || $code -ge 128 ]]; then bad "$name: exit code $code";
+  elif [[ $(grep -c '^error: ' "$tmp/err") -ne 1 ]]; then bad "$name: want one error line, got: $(cat "$tmp/err")";
+  elif ! grep -q "$pattern" "$tmp/err"; then bad "$name: want '$pattern', got: $(cat "$tmp/err")"; fi
+}
+expect_error missing_scene "error: $tmp/nope.json: (file)" render "$tmp/nope.json" --out "$tmp/x"
+expect_error bad_size "error: command line: --size" render "$root/scenes/spring.json" --out "$tmp/x" --size 12
+printf '{"model": "spring", "solver": {"dt": -1}}' >"$tmp/bad.json"
+expect_error bad_dt "error: $tmp/bad.json: solver.dt" render "$tmp/bad.json" --out "$tmp/x"
+printf '{"model": "spring", "view": {"eye": [0, 0, 1], "target": [0, 0, 1]}}' >"$tmp/badview.json"
+expect_error bad_view "error: $tmp/badview.json: view.target" render "$tmp/badview.json" --out "$tmp/x"
+
+# A video only with ffmpeg; without it a clear note and the frames anyway.
+if "$exe" render "$root/scenes/spring.json" --seconds 0.1 --fps 20 --size 320x240 --out "$tmp/v" --video "$tmp/v.mp4" --quiet >"$tmp/out" 2>&1; then
+  if command -v ffmpeg >/dev/null; then [[ -s $tmp/v.mp4 ]] || bad "video: no $tmp/v.mp4"
+  else grep -q "ffmpeg is not installed" "$tmp/out" || bad "video: no note about ffmpeg"; fi
+else bad "render --video failed: $(tail -3 "$tmp/out")"; fi
+
+# The whole app offscreen, panels included.
+if "$exe" gui "$root/scenes/spring.json" --screenshot "$tmp/app.png" --frames 10 >"$tmp/out" 2>&1; then
+  "$check" --check-app-screenshot "$tmp/app.png" || bad "app screenshot content"
+else
+  bad "gui --screenshot failed: $(tail -3 "$tmp/out")"
+fi
+[[ $fail -eq 0 ]] && echo "ok: clothlab-render frames, errors, video, app screenshot"
+exit $fail
