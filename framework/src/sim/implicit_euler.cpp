@@ -77,7 +77,10 @@ void ImplicitEulerSolver::buildPattern(const VectorX& w, const std::vector<Sprin
             }
     }
     pattern_springs_ = springs.size();
-    ldlt_.analyzePattern(A_);
+    use_cg_ = unknowns > 1500;
+    dv_ = VectorX::Zero(unknowns);
+    if (use_cg_) cg_.setTolerance(1e-10);
+    else ldlt_.analyzePattern(A_);
 }
 
 bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force,
@@ -118,11 +121,18 @@ bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const
         if (a >= 0) b_.segment<3>(a) -= Kv;
     }
 
-    // (3) solve A Δv = b (sparse Cholesky, pattern analysed once)
-    ldlt_.factorize(A_);
-    if (ldlt_.info() != Eigen::Success) return false;
-    const VectorX dv = ldlt_.solve(b_);
-    if (ldlt_.info() != Eigen::Success || !dv.allFinite()) return false;
+    // (3) solve A Δv = b: sparse Cholesky (pattern analysed once) or, for large systems, CG
+    if (use_cg_) {
+        cg_.compute(A_);
+        dv_ = cg_.solveWithGuess(b_, dv_);
+        if (cg_.info() != Eigen::Success || !dv_.allFinite()) return false;
+    } else {
+        ldlt_.factorize(A_);
+        if (ldlt_.info() != Eigen::Success) return false;
+        dv_ = ldlt_.solve(b_);
+        if (ldlt_.info() != Eigen::Success || !dv_.allFinite()) return false;
+    }
+    const VectorX& dv = dv_;
 
     // (4) v += Δv, x += dt v (pinned particles keep their velocity)
     for (int i = 0; i < n; ++i)
