@@ -162,7 +162,7 @@ std::vector<std::string> plotPrecision(const std::string& dir, const PrecisionRe
           << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid\n"
           << "set xlabel '" << xlabel << "'\nset ylabel 'error at T = " << r.end_time << " s [m]'\n"
           << "set key outside right font ',9'\n"
-          << "set title '" << (with_slope ? "convergence" : "work-precision") << ": " << r.scene << " (reference: " << r.reference << ")'\n"
+          << "set title '" << (with_slope ? "convergence" : "work-precision") << ": " << r.scene << " (reference: " << r.reference << ")' noenhanced\n"
           << "plot ";
         for (size_t i = 0; i < methods.size(); ++i) {
             const double slope = r.slopes.count(methods[i]) ? r.slopes.at(methods[i]) : NAN;
