@@ -86,8 +86,14 @@ void ImplicitEulerSolver::buildPattern(const VectorX& w, const std::vector<Sprin
 bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force,
                                const std::vector<Spring>& springs, double c, double dt) {
     const int n = static_cast<int>(x.cols());
-    if (static_cast<int>(index_.size()) != n || pattern_springs_ != springs.size()) buildPattern(w, springs);
+    bool same_pins = static_cast<int>(index_.size()) == n && pattern_springs_ == springs.size();
+    for (int i = 0; same_pins && i < n; ++i) same_pins = (w[i] > 0.0) == (index_[static_cast<size_t>(i)] >= 0);
+    if (!same_pins) buildPattern(w, springs);  // first step, or particles were pinned or released
     const int unknowns = static_cast<int>(A_.rows());
+    if (unknowns == 0) {  // everything pinned
+        x += dt * v;
+        return true;
+    }
 
     // (1) forces at the current state: b = dt f
     f_.setZero(3, n);
@@ -125,7 +131,9 @@ bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const
     if (use_cg_) {
         cg_.compute(A_);
         dv_ = cg_.solveWithGuess(b_, dv_);
-        if (cg_.info() != Eigen::Success || !dv_.allFinite()) return false;
+        // Not converged within 2n iterations (extremely stiff): the finite iterate is used; should the
+        // motion then grow, runSimulation() reports it as unstable.
+        if ((cg_.info() != Eigen::Success && cg_.info() != Eigen::NoConvergence) || !dv_.allFinite()) return false;
     } else {
         ldlt_.factorize(A_);
         if (ldlt_.info() != Eigen::Success) return false;

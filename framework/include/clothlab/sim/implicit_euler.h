@@ -62,7 +62,8 @@ public:
     /// solved by a sparse Cholesky factorisation (Eigen::SimplicialLDLT: exact, robust for extreme
     /// stiffness and mass ratios); above, where the factor fills in and costs seconds per step, by
     /// conjugate gradients with a diagonal (Jacobi) preconditioner, relative residual 10⁻¹⁰, started
-    /// from the previous step's Δv.
+    /// from the previous step's Δv (if it does not converge within 2·unknowns iterations, the finite
+    /// iterate is used). The sparsity pattern is rebuilt when particles are pinned or released.
     /// @param x, v     positions (m) and velocities (m/s), 3 x N (updated in place)
     /// @param w        inverse masses, N, 1/kg
     /// @param force    the force field F(x, v), N
