@@ -63,6 +63,9 @@ if "$exe" study stability "$root/scenes/spring.json" --methods symplectic_euler,
      --out "$tmp/st" >"$tmp/out" 2>&1 && grep -q "agrees in" "$tmp/out" && [[ -s $tmp/st/stability.csv ]]; then ok; else bad "study stability: $(tail -3 "$tmp/out")"; fi
 if "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/pr" >"$tmp/out" 2>&1 \
      && grep -q "measured order" "$tmp/out" && [[ $(wc -l <"$tmp/pr/precision.csv") -eq 3 ]]; then ok; else bad "study precision: $(tail -3 "$tmp/out")"; fi
+# Without gnuplot on the PATH: a clear note, the CSV all the same, exit 0.
+if env PATH=/nonexistent "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/np" >"$tmp/out" 2>"$tmp/err" \
+     && grep -q "gnuplot not found" "$tmp/err" && [[ -s $tmp/np/precision.csv && ! -e $tmp/np/precision.png ]]; then ok; else bad "study without gnuplot: $(cat "$tmp/err")"; fi
 "$exe" study precision "$root/scenes/spring.json" --dt-min -1 >"$tmp/out" 2>"$tmp/err"
 if [[ $? -eq 1 ]] && grep -q "^error: command line: --dt-min" "$tmp/err"; then ok; else bad "study bad range: $(cat "$tmp/err")"; fi
 

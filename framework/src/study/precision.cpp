@@ -152,10 +152,6 @@ std::vector<std::string> plotPrecision(const std::string& dir, const PrecisionRe
             if (p.method == m && !p.unstable && p.error > 0.0) d << p.dt << " " << p.error << " " << p.wall << "\n";
     }
     std::vector<std::string> written;
-    if (!gnuplotAvailable()) {
-        runGnuplot(dir + "/precision.gp", "");  // prints the note
-        return written;
-    }
     auto script = [&](const std::string& png, const std::string& xlabel, const std::string& column, bool with_slope) {
         std::ostringstream s;
         s << "cd '" << dir << "'\nset terminal pngcairo size 720,520 font ',10'\nset output '" << png << "'\n"

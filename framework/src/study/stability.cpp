@@ -214,10 +214,6 @@ std::vector<std::string> plotStability(const std::string& dir, const StabilityRe
         return s.str();
     };
     std::vector<std::string> written;
-    if (!gnuplotAvailable()) {
-        runGnuplot(dir + "/stability.gp", "");  // prints the note
-        return written;
-    }
     for (const std::string& m : methods) {
         std::ostringstream s;
         s << "set terminal pngcairo size 640,480 font ',10'\nset output 'stability_" << m << ".png'\n" << common.str() << panel(m);
