@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -111,6 +112,14 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
                   << " steps per run\n";
         const StabilityResult r = stabilitySweep(scene, o);
         printStabilityTable(std::cout, r);
+        // The measured critical step at the scene's own k, against theory (bisection).
+        for (const std::string& m : o.methods) {
+            const double theory = theoreticalCriticalDt(m, r.omega_ref);
+            if (!(theory > 0.0) || !std::isfinite(theory)) continue;
+            const double measured = measureCriticalDt(scene, m, theory / 10, theory * 10, o.criteria);
+            std::printf("%-18s critical dt at k = %g N/m: measured %.4g s, theory %.4g s (ratio %.3f)\n", m.c_str(), r.k_ref,
+                        measured, theory, measured / theory);
+        }
         writeStabilityCsv(out + "/stability.csv", r);
         std::cout << "wrote " << out << "/stability.csv\n";
         for (const std::string& png : plotStability(std::filesystem::absolute(out).string(), r)) std::cout << "wrote " << png << "\n";
