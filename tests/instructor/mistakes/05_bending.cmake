@@ -7,10 +7,10 @@ clothlab_mistake(q1_not_balanced FILE bending.cpp
   FIND "g.q1 = -g.q2 - g.q3 - g.q4;" REPLACE "g.q1 = -g.q2 - g.q3;"
   WHY "q1 forgets q4: momentum is created")
 clothlab_mistake(q2_second_term_sign FILE bending.cpp
-  FIND "+ (c.cross(n1) + n2.cross(c) * d) / l2;" REPLACE "- (c.cross(n1) + n2.cross(c) * d) / l2;"
+  FIND "g.q2 = b.cross(e1) + c.cross(e2);" REPLACE "g.q2 = b.cross(e1) - c.cross(e2);"
   WHY "sign slip in the second half of q2")
 clothlab_mistake(q_copied_from_slides FILE bending.cpp
-  FIND "g.q3 = (n2.cross(a) + a.cross(n1) * d) / l1;" REPLACE "g.q3 = (a.cross(n2) + n1.cross(a) * d) / l1;"
+  FIND "g.q3 = e1.cross(a);" REPLACE "g.q3 = a.cross(e1);"
   WHY "q3 as printed on the slides is -dd/dp3")
 clothlab_mistake(not_relative_to_p1 FILE bending.cpp
   FIND "const Vec3 a = p2 - p1, b = p3 - p1, c = p4 - p1;" REPLACE "const Vec3 a = p2, b = p3, c = p4;"
