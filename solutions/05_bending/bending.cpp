@@ -43,8 +43,9 @@ BendingCorrection projectBendingConstraint(const Vec3& p1, const Vec3& p2, const
     const double denom = w1 * g.q1.squaredNorm() + w2 * g.q2.squaredNorm() + w3 * g.q3.squaredNorm() +
                          w4 * g.q4.squaredNorm();
     if (denom < 1e-24) return r;                       // all pinned
+    const double f = k * std::sqrt(s2) / denom;        // (computed while acos runs)
     const double C = std::acos(g.d) - phi0;
-    const double s = k * std::sqrt(s2) * C / denom;    // + sign: dC/dp_i = -q_i / sqrt(1 - d^2)
+    const double s = f * C;                            // + sign: dC/dp_i = -q_i / sqrt(1 - d^2)
     r.dp1 = s * w1 * g.q1;
     r.dp2 = s * w2 * g.q2;
     r.dp3 = s * w3 * g.q3;

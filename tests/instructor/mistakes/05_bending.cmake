@@ -1,7 +1,7 @@
 # Typical mistakes in stage 05. Each is the reference with one edit; ./lab test proves that
 # the graded tests catch every one (stage_05.mistake_caught.<name>). Included from tests/CMakeLists.txt.
 clothlab_mistake(paper_sign FILE bending.cpp
-  FIND "const double s = k * std::sqrt(s2) * C / denom;" REPLACE "const double s = -k * std::sqrt(s2) * C / denom;"
+  FIND "const double s = f * C;" REPLACE "const double s = -f * C;"
   WHY "the minus sign printed on the slides, used with q_i = dd/dp_i: bends away from the rest angle")
 clothlab_mistake(q1_not_balanced FILE bending.cpp
   FIND "g.q1 = -g.q2 - g.q3 - g.q4;" REPLACE "g.q1 = -g.q2 - g.q3;"
