@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates docs/figures/pbd_xpbd_sag.png: static sag of a hanging 11x11 cloth against the solver
-# iteration count, PBD (k = 1) versus XPBD (compliance 0.01 m/N, 1 and 10 substeps). Needs ./lab build and gnuplot.
+# Regenerates the figures of docs/pbd.md (needs ./lab build and gnuplot):
+#   docs/figures/pbd_xpbd_sag.png  static sag of a hanging 11x11 cloth against the solver iteration
+#                                  count, PBD (k = 1) versus XPBD (compliance 0.01 m/N, 1 and 10 substeps)
+#   docs/figures/pbd_sphere.png    the lecture demo scenes/pbd_sphere.json after 3 s
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 exe=build/bin/clothlab
@@ -32,3 +34,23 @@ plot "$tmp/sag.dat" u 1:2 w lp pt 7 t "PBD, k = 1", \
      "" u 1:4 w lp pt 9 t "XPBD, compliance 0.01 m/N, 10 substeps"
 GP
 echo "wrote docs/figures/pbd_xpbd_sag.png"
+
+"$exe" run scenes/pbd_sphere.json --quiet --dump "$tmp/sphere.csv" >/dev/null
+awk -F, 'NR>1 { printf "%s %s %s\n", $2, $4, $3; if (($1+1) % 30 == 0) print "" }' "$tmp/sphere.csv" >"$tmp/sphere.dat"
+gnuplot <<GP
+set terminal pngcairo size 640,480 font "sans,10" noenhanced
+set output "docs/figures/pbd_sphere.png"
+set title "scenes/pbd_sphere.json after 3 s (PBD, 30x30, distance + bending + sphere collider)"
+set view 62, 30
+set xyplane at 0
+unset key
+set parametric
+set isosamples 24, 12
+set urange [0:2*pi]
+set vrange [-pi/2:pi/2]
+set xrange [-1:1]; set yrange [-1:1]; set zrange [0:1.3]
+set xlabel "x"; set ylabel "z"; set zlabel "y"
+splot 0.4*cos(u)*cos(v), 0.4*sin(u)*cos(v), 0.5+0.4*sin(v) lc rgb "#bbbbbb", \\
+      "$tmp/sphere.dat" u 1:2:3 w lines lc rgb "#1f5fbf"
+GP
+echo "wrote docs/figures/pbd_sphere.png"
