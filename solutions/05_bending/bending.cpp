@@ -10,20 +10,23 @@
 namespace clothlab {
 
 // ---- Task 5.1: d = n1.n2 and the q-vectors (appendix A) -------------------------
-BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+namespace {
+// The work of bendingGradients(), in a form the compiler can inline into the projection below.
+inline BendingGradients gradientsOf(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
     BendingGradients g;
     const Vec3 a = p2 - p1, b = p3 - p1, c = p4 - p1;  // p2, p3, p4 relative to p1
-    const Vec3 m1 = a.cross(b), m2 = a.cross(c);
-    const double l1 = m1.norm(), l2 = m2.norm();        // |p2 x p3|, |p2 x p4|
-    if (l1 < 1e-12 || l2 < 1e-12) return g;             // zero-area triangle: normals undefined
-    const double i1 = 1.0 / l1, i2 = 1.0 / l2;           // multiply by these instead of dividing (faster)
-    const Vec3 n1 = m1 * i1, n2 = m2 * i2;
-    const double d = std::clamp(n1.dot(n2), -1.0, 1.0);
+    const Vec3 m1 = a.cross(b), m2 = a.cross(c);        // |m1| = |p2 x p3|, |m2| = |p2 x p4|
+    const double L1 = m1.squaredNorm(), L2 = m2.squaredNorm();
+    if (L1 < 1e-24 || L2 < 1e-24) return g;             // zero-area triangle (|m| < 1e-12): normals undefined
+    // n1 = m1/|m1|, n2 = m2/|m2| with one square root for both: r = 1/(|m1| |m2|), so
+    // d = n1.n2 = (m1.m2) r, and 1/|m1|^2 = |m2|^2 r^2, 1/|m2|^2 = |m1|^2 r^2 (multiplying is faster than dividing).
+    const double r = 1.0 / std::sqrt(L1 * L2);
+    const double d = std::clamp(m1.dot(m2) * r, -1.0, 1.0);
     g.d = d;
-    // q3 = (n2 x p2 + (p2 x n1) d) / |p2 x p3| = ((n2 - d n1) x p2) / |p2 x p3|, and so on: the header's
-    // formulas with the common factors e1, e2 pulled out (4 cross products instead of 8).
-    // The slides print them with the opposite cross-product order, which is -dd/dp (see the task sheet).
-    const Vec3 e1 = (n2 - d * n1) * i1, e2 = (n1 - d * n2) * i2;
+    // q3 = (n2 x p2 + (p2 x n1) d) / |p2 x p3| = e1 x p2 with e1 = (n2 - d n1)/|m1| = m2 r - d m1/|m1|^2,
+    // and so on: the header's formulas with the common factors e1, e2 pulled out (4 cross products
+    // instead of 8). The slides print them with the opposite cross-product order, which is -dd/dp.
+    const Vec3 e1 = m2 * r - (d * L2 * r * r) * m1, e2 = m1 * r - (d * L1 * r * r) * m2;
     g.q3 = e1.cross(a);
     g.q4 = e2.cross(a);
     g.q2 = b.cross(e1) + c.cross(e2);
@@ -31,12 +34,17 @@ BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3
     g.valid = true;
     return g;
 }
+}  // namespace
+
+BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+    return gradientsOf(p1, p2, p3, p4);
+}
 
 // ---- Task 5.2: the projection ------------------------------------------------------
 BendingCorrection projectBendingConstraint(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4,
                                            double w1, double w2, double w3, double w4, double phi0, double k) {
     BendingCorrection r;
-    const BendingGradients g = bendingGradients(p1, p2, p3, p4);
+    const BendingGradients g = gradientsOf(p1, p2, p3, p4);  // = bendingGradients(), inlined
     if (!g.valid) return r;
     const double s2 = 1.0 - g.d * g.d;
     if (s2 < 1e-12) return r;                          // flat or folded: arccos not differentiable

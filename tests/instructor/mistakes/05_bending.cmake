@@ -19,7 +19,7 @@ clothlab_mistake(no_pinned_guard FILE bending.cpp
   FIND "if (denom < 1e-24) return r;" REPLACE ""
   WHY "all particles pinned: division by zero gives NaN")
 clothlab_mistake(no_zero_area_guard FILE bending.cpp
-  FIND "if (l1 < 1e-12 || l2 < 1e-12) return g;" REPLACE ""
+  FIND "if (L1 < 1e-24 || L2 < 1e-24) return g;" REPLACE ""
   WHY "zero-area triangle: division by zero gives NaN")
 clothlab_mistake(mass_not_in_denominator FILE bending.cpp
   FIND "const double denom = w1 * g.q1.squaredNorm() + w2 * g.q2.squaredNorm() + w3 * g.q3.squaredNorm() +
