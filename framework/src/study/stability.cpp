@@ -166,14 +166,14 @@ void printStabilityTable(std::ostream& out, const StabilityResult& r) {
             out << "\n";
         }
         if (m == "explicit_euler")
-            out << "theory: undamped explicit Euler grows by sqrt(1 + w^2 dt^2) per step - unstable for every dt; "
+            out << "theory: undamped explicit Euler grows by sqrt(1 + omega^2 dt^2) per step - unstable for every dt; "
                    "the map shows where it grew beyond the energy factor within the run\n";
         else if (m == "symplectic_euler" || m == "velocity_verlet")
             out << "theory: stable iff omega_max dt < 2 (one spring: k < 4 m / dt^2); agrees in " << agree << " of " << cells << " cells\n";
         else if (m == "rk4")
             out << "theory: stable iff omega_max dt < 2 sqrt(2); agrees in " << agree << " of " << cells << " cells\n";
         else if (m == "implicit_euler")
-            out << "theory: stable for every dt (amplitude x 1/sqrt(1 + w^2 dt^2) per step); agrees in " << agree << " of " << cells << " cells\n";
+            out << "theory: stable for every dt (amplitude x 1/sqrt(1 + omega^2 dt^2) per step); agrees in " << agree << " of " << cells << " cells\n";
     }
     out << "\nProvot's estimate: k_crit = m pi^2 / dt^2 (the slides print m dt^2 / pi^2 - upside down)";
     if (std::isfinite(r.min_mass)) out << "; here m = " << fmt(r.min_mass) << " kg";
@@ -210,7 +210,7 @@ std::vector<std::string> plotStability(const std::string& dir, const StabilityRe
           << "     '" << file << "' using 1:($3 > 0 ? 1/0 : $2) with points pt 5 ps 0.7 lc rgb '#d62728' title 'unstable', \\\n"
           << "     2 / w(x) with lines lw 2 lc rgb 'black' title '{/Symbol w}_{max}{/Symbol D}t = 2', \\\n"
           << "     2*sqrt(2) / w(x) with lines lw 2 dt 2 lc rgb '#555555' title '{/Symbol w}_{max}{/Symbol D}t = 2{/Symbol \\326}2 (RK4)', \\\n"
-          << "     pi / w(x) with lines lw 2 dt 3 lc rgb '#1f5fbf' title 'Provot: k = m{/Symbol p}^2/{/Symbol D}t^2'\n";
+          << "     pi / w(x) with lines lw 2 dt 3 lc rgb '#1f5fbf' title 'Provot: {/Symbol w}_{max}{/Symbol D}t = {/Symbol p}'\n";
         return s.str();
     };
     std::vector<std::string> written;

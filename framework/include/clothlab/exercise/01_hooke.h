@@ -61,6 +61,8 @@ void symplecticEulerStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const Force
 /// \f[ v^{n+1/2} = v^n + \tfrac{\Delta t}{2}\,w\,F(x^n, v^n),\quad
 ///     x^{n+1} = x^n + \Delta t\,v^{n+1/2},\quad
 ///     v^{n+1} = v^{n+1/2} + \tfrac{\Delta t}{2}\,w\,F(x^{n+1}, v^{n+1/2}) \f]
+/// Second order when F depends on the positions only; with velocity-dependent forces (damping)
+/// the last kick uses \f$ v^{n+1/2} \f$ instead of \f$ v^{n+1} \f$ and the step is first order.
 /// @param x, v, w, force, dt  as in explicitEulerStep()
 void velocityVerletStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt);
 
