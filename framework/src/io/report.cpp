@@ -43,6 +43,8 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
     std::snprintf(buf, sizeof buf, "summary: %lld steps, %.4g s simulated in %.4g s wall (%.3g us per step)\n",
                   r.steps, sim.state().t, r.wall, per_step * 1e6);
     out << buf;
+    if (r.unstable && !r.rows.empty())
+        out << "  (the state is no longer finite: metrics of the last report row, step " << r.rows.back().step << ")\n";
     if (!r.rows.empty())
         for (const Metric& m : r.rows.back().metrics) {
             std::snprintf(buf, sizeof buf, "  %-22s %14.6e %s\n", m.name.c_str(), m.value, m.unit.c_str());

@@ -9,7 +9,11 @@ namespace {
 std::string instability(const State& s, double bound) {
     if (!s.x.allFinite()) return "position is NaN or infinite";
     if (!s.v.allFinite()) return "velocity is NaN or infinite";
-    if (s.x.size() > 0 && s.x.colwise().norm().maxCoeff() > bound) return "a particle left the region |x| < " + std::to_string(bound) + " m";
+    if (s.x.size() > 0 && s.x.colwise().norm().maxCoeff() > bound) {
+        std::ostringstream m;
+        m << "a particle left the region |x| < " << bound << " m";
+        return m.str();
+    }
     return "";
 }
 }  // namespace

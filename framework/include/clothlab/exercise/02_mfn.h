@@ -31,7 +31,7 @@ namespace clothlab {
 /// \f$ (n_x-1)n_y + n_x(n_y-1) \f$ structural, \f$ 2(n_x-1)(n_y-1) \f$ shear and
 /// \f$ (n_x-2)n_y + n_x(n_y-2) \f$ bending springs (terms with a negative factor count as 0).
 /// @param x       initial positions, 3 x (nx·ny), m; particle (c, r) is column r·nx + c
-/// @param nx, ny  grid size, particles per row and per column (≥ 1 each)
+/// @param nx, ny  grid size, particles per row and per column (≥ 2 each)
 /// @param types   which spring types exist and their stiffness k (N/m) and damping kd (N s/m)
 /// @return        the springs; Spring::i < Spring::j is not required
 std::vector<Spring> makeClothSprings(const Matrix3X& x, int nx, int ny, const ClothSprings& types);
