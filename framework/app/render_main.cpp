@@ -178,6 +178,7 @@ int runRender(const RenderArgs& a) {
 struct GuiArgs {
     std::string scene, screenshot, scenes = CLOTHLAB_SCENES_DIR, size = "1280x800";
     int frames = 30, wave = 0, edges = -1;
+    bool strain = false;
 };
 
 int runGui(const GuiArgs& a, bool bench) {
@@ -190,6 +191,7 @@ int runGui(const GuiArgs& a, bool bench) {
     o.scenes_dir = a.scenes;
     o.wave_grid = a.wave;
     o.edges = a.edges;
+    o.strain = a.strain;
     App app(o);
     // The first frames build the font texture and lay out the panel; time the rest.
     const int warm = 3, frames = std::max(a.frames, warm + 1);
@@ -243,6 +245,7 @@ int main(int argc, char** argv) {
     g->add_option("--scenes", ga.scenes, "Folder the scene picker lists");
     g->add_option("--size", ga.size, "Window size WIDTHxHEIGHT");
     g->add_flag_callback("--edges", [&] { ga.edges = 1; }, "Start with the spring/constraint overlay shown");
+    g->add_flag("--strain", ga.strain, "Start with the overlay coloured by strain");
     g->callback([&] { code = runGui(ga, false); });
 
     GuiArgs ba;
@@ -253,6 +256,7 @@ int main(int argc, char** argv) {
     b->add_option("--size", ba.size, "Window size WIDTHxHEIGHT");
     b->add_option("--screenshot", ba.screenshot, "Also save the last frame");
     b->add_flag_callback("--edges", [&] { ba.edges = 1; }, "Draw the spring/constraint overlay too");
+    b->add_flag("--strain", ba.strain, "Draw the overlay coloured by strain");
     b->callback([&] {
         if (ba.wave == 0) ba.wave = 32;
         code = runGui(ba, true);

@@ -128,7 +128,8 @@ bool App::load(const std::string& path) {
     user_pins_.clear();
     energy_.clear(), error_.clear(), step_ms_.clear();
     camera_set_ = false;
-    view_.edges = options_.edges < 0 ? (scene_.model != "cloth" && options_.wave_grid < 2) : options_.edges == 1;
+    view_.color_by_strain = options_.strain;
+    view_.edges = options_.strain ? true : options_.edges < 0 ? (scene_.model != "cloth" && options_.wave_grid < 2) : options_.edges == 1;
     rebuild(false);
     return true;
 }
@@ -336,6 +337,9 @@ void App::panel(int /*width*/, int height) {
         ImGui::TextWrapped("%s", message_.c_str());
         ImGui::PopStyleColor();
     }
+    if (options_.wave_grid > 1)
+        ImGui::TextWrapped("Benchmark: the view shows a %dx%d cloth moved by a travelling wave (no simulation).",
+                           options_.wave_grid, options_.wave_grid);
     panelScene();
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panelParameters();
     if (ImGui::CollapsingHeader("View")) panelView();

@@ -88,6 +88,7 @@ Eigen::Vector3f strainColor(double strain, double range) {
 void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height) {
     glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_DITHER);
     glClearColor(0.93f, 0.94f, 0.96f, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDisable(GL_TEXTURE_2D);
@@ -121,6 +122,8 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixd(V.data());
 
+    right_ = V.block<1, 3>(0, 0).transpose();
+    up_ = V.block<1, 3>(1, 0).transpose();
     // Size of what is seen, for grid spacing, marker and sphere sizes.
     const double scale = (cam.eye - cam.target).norm() * std::sin(cam.fovy * kPi / 360);
 
@@ -348,16 +351,28 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
             setMaterial(GL_FRONT_AND_BACK, pinned ? Eigen::Vector3f(0.85f, 0.12f, 0.10f) : Eigen::Vector3f(0.95f, 0.55f, 0.15f), 0.5f, 50);
             drawSphere(d.x.col(i), (pinned ? 0.035 : (n > 3 ? 0.045 : 0.08)) * scale, 24, 12);
         }
-        // The analytic solution as a translucent green ghost.
+        // The analytic solution as a green ring facing the camera, drawn on top.
+        glDisable(GL_LIGHTING);
+        glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
-        const float amb[4] = {0.1f, 0.3f, 0.15f, 0.45f}, dif[4] = {0.25f, 0.75f, 0.35f, 0.45f};
-        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, amb);
-        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, dif);
-        for (const Vec3& g : d.ghosts) drawSphere(g, (n > 3 ? 0.05 : 0.09) * scale, 24, 12);
-        glDepthMask(GL_TRUE);
+        glEnable(GL_LINE_SMOOTH);
+        glLineWidth(3.0f);
+        glColor4f(0.10f, 0.70f, 0.25f, 0.9f);
+        const double gr = (n > 3 ? 0.06 : 0.11) * scale;
+        for (const Vec3& g : d.ghosts) {
+            glBegin(GL_LINE_LOOP);
+            for (int k = 0; k < 48; ++k) {
+                const double a = 2 * kPi * k / 48;
+                const Vec3 p = g + gr * (std::cos(a) * right_ + std::sin(a) * up_);
+                glVertex3d(p.x(), p.y(), p.z());
+            }
+            glEnd();
+        }
+        glLineWidth(1.0f);
+        glDisable(GL_LINE_SMOOTH);
         glDisable(GL_BLEND);
+        glEnable(GL_DEPTH_TEST);
         glDisable(GL_LIGHTING);
         return;
     }
@@ -371,13 +386,16 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
         for (int i = 0; i < n; ++i) glVertex3d(d.x(0, i), d.x(1, i), d.x(2, i));
         glEnd();
     }
+    glDisable(GL_BLEND);
+    glDisable(GL_POINT_SMOOTH);
     if (opt.pinned && d.w.size() == n) {
-        glPointSize(9.0f);
-        glColor3f(0.85f, 0.10f, 0.10f);
-        glBegin(GL_POINTS);
-        for (int i = 0; i < n; ++i)
-            if (d.w[i] == 0) glVertex3d(d.x(0, i), d.x(1, i), d.x(2, i));
-        glEnd();
+        // Pinned particles of a cloth: small red spheres.
+        glEnable(GL_LIGHTING);
+        setMaterial(GL_FRONT_AND_BACK, {0.85f, 0.12f, 0.10f}, 0.5f, 50);
+        int drawn = 0;
+        for (int i = 0; i < n && drawn < 2000; ++i)
+            if (d.w[i] == 0) drawSphere(d.x.col(i), 0.014 * scale, 12, 6), ++drawn;
+        glDisable(GL_LIGHTING);
     }
     glDisable(GL_BLEND);
     glDisable(GL_POINT_SMOOTH);

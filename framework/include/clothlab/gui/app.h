@@ -34,6 +34,7 @@ struct AppOptions {
     std::string scenes_dir;   ///< folder the scene picker lists (*.json)
     bool play = true;         ///< start running
     int edges = -1;           ///< spring/constraint overlay: -1 by scene (on for springs and chains), 0 off, 1 on
+    bool strain = false;      ///< colour the overlay by strain instead of by type
     int wave_grid = 0;        ///< > 0: benchmark mode, show an n x n cloth moved by a travelling wave instead of a simulation
 };
 
