@@ -198,17 +198,6 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
             if (c.type == Collider::Type::Sphere) {
                 setMaterial(GL_FRONT_AND_BACK, {0.55f, 0.60f, 0.66f}, 0.35f, 40);
                 drawSphere(c.point, std::max(c.radius - 0.5e-3 * scale, 0.0), 48, 24);
-            } else if (!(ground_is_plane && c.normal.y() > 0.99)) {
-                Vec3 a, b;
-                planeAxes(c.normal, a, b);
-                const Vec3 o = c.point + (cam.target - c.point).dot(a) * a + (cam.target - c.point).dot(b) * b;
-                const double e = 1.5 * scale;
-                setMaterial(GL_FRONT_AND_BACK, {0.70f, 0.72f, 0.75f}, 0.1f, 10);
-                glBegin(GL_QUADS);
-                glNormal3d(c.normal.x(), c.normal.y(), c.normal.z());
-                const Vec3 quad[4] = {o - e * a - e * b, o + e * a - e * b, o + e * a + e * b, o - e * a + e * b};
-                for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
-                glEnd();
             }
         }
         glDisable(GL_LIGHTING);
@@ -217,6 +206,33 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
     if (opt.edges || d.triangles.empty()) drawEdges(d, opt, scale);
     drawParticles(d, opt, scale);
+
+    // Planes other than the ground: translucent panels with a border, drawn last so what lies behind shows.
+    if (opt.colliders) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        for (const Collider& c : d.colliders) {
+            if (c.type != Collider::Type::Plane || (ground_is_plane && c.normal.y() > 0.99)) continue;
+            Vec3 a, b;
+            planeAxes(c.normal, a, b);
+            const Vec3 o = c.point + (cam.target - c.point).dot(a) * a + (cam.target - c.point).dot(b) * b;
+            const double e = 1.2 * scale;
+            const Vec3 quad[4] = {o - e * a - e * b, o + e * a - e * b, o + e * a + e * b, o - e * a + e * b};
+            glColor4f(0.55f, 0.62f, 0.75f, 0.30f);
+            glBegin(GL_QUADS);
+            for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
+            glEnd();
+            glColor4f(0.30f, 0.36f, 0.50f, 0.8f);
+            glLineWidth(1.5f);
+            glBegin(GL_LINE_LOOP);
+            for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
+            glEnd();
+            glLineWidth(1.0f);
+        }
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
     glFinish();
 }
 
