@@ -33,6 +33,7 @@ struct TestResult {
 
 struct StageResult {
     std::string stage, title, exe;
+    std::string broken;  // compiler errors when the stage did not compile
     std::vector<TestResult> tests;
     double points() const { double s = 0; for (auto& t : tests) s += t.points; return s; }
     double max_points() const { double s = 0; for (auto& t : tests) s += t.max_points; return s; }
@@ -79,6 +80,16 @@ std::vector<std::string> listTests(const std::string& exe, const fs::path& tmp) 
     return names;
 }
 
+/// GoogleTest starts a failure with "path/to/file.cpp:123" or "unknown file": keep only "file.cpp:123: ".
+std::string tidyFailure(const std::string& text) {
+    const auto nl = text.find('\n');
+    if (nl == std::string::npos) return text;
+    const std::string first = text.substr(0, nl), rest = text.substr(nl + 1);
+    if (first == "unknown file") return rest;
+    if (first.find(".cpp:") != std::string::npos) return fs::path(first).filename().string() + ": " + rest;
+    return text;
+}
+
 /// Runs one test in its own process with a time limit.
 TestResult runOne(const std::string& exe, const std::string& name, int timeout_s, const fs::path& tmp) {
     TestResult r;
@@ -103,7 +114,7 @@ TestResult runOne(const std::string& exe, const std::string& name, int timeout_s
     for (const auto& suite : j["testsuites"])
         for (const auto& t : suite["testsuite"]) {
             if (t.contains("failures")) {
-                for (const auto& f : t["failures"]) r.message += f.value("failure", "") + "\n";
+                for (const auto& f : t["failures"]) r.message += tidyFailure(f.value("failure", "")) + "\n";
                 return r;
             }
             r.passed = code == 0;
@@ -123,6 +134,31 @@ json loadPoints(const fs::path& file) {
     return j;
 }
 
+/// The points file of stage NN in points_dir (NN_name.points.json).
+fs::path pointsFile(const std::string& stage, const fs::path& points_dir) {
+    for (const auto& e : fs::directory_iterator(points_dir)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind(stage + "_", 0) == 0 && name.size() > 12 && name.substr(name.size() - 12) == ".points.json")
+            return e.path();
+    }
+    die(points_dir.string() + ": (folder): no " + stage + "_*.points.json");
+}
+
+/// spec "NN=file": stage NN did not compile; every test fails with the compiler's message from file.
+StageResult brokenStage(const std::string& spec, const fs::path& points_dir) {
+    const auto eq = spec.find('=');
+    if (eq == std::string::npos) die("--broken expects NN=LOGFILE (got " + spec + ")");
+    StageResult s;
+    s.stage = spec.substr(0, eq);
+    const json points = loadPoints(pointsFile(s.stage, points_dir));
+    s.title = points["title"];
+    s.broken = readFile(spec.substr(eq + 1));
+    const std::string why = "the submission does not compile:\n" + s.broken;
+    for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it)
+        s.tests.push_back({it.key(), false, 0.0, it->get<double>(), why});
+    return s;
+}
+
 /// stage spec "NN=path/to/exe": runs all tests, applies points.
 StageResult gradeStage(const std::string& spec, const fs::path& points_dir, int timeout_s, const fs::path& tmp) {
     const auto eq = spec.find('=');
@@ -130,12 +166,7 @@ StageResult gradeStage(const std::string& spec, const fs::path& points_dir, int 
     StageResult s;
     s.stage = spec.substr(0, eq);
     s.exe = spec.substr(eq + 1);
-    fs::path points_file;
-    for (const auto& e : fs::directory_iterator(points_dir))
-        if (e.path().filename().string().rfind(s.stage + "_", 0) == 0 && e.path().string().size() > 12 &&
-            e.path().filename().string().find(".points.json") != std::string::npos)
-            points_file = e.path();
-    if (points_file.empty()) die(points_dir.string() + ": (folder): no " + s.stage + "_*.points.json");
+    const fs::path points_file = pointsFile(s.stage, points_dir);
     const json points = loadPoints(points_file);
     s.title = points["title"];
     const auto names = listTests(s.exe, tmp);
@@ -172,7 +203,9 @@ void printTable(const std::vector<StageResult>& stages, bool verbose) {
                     s.points(), s.max_points());
         pts += s.points();
         max += s.max_points();
-        if (verbose)
+        if (verbose && !s.broken.empty())
+            std::printf("    DOES NOT COMPILE (every test 0 points)\n        %s\n", firstLines(s.broken, 4).c_str());
+        else if (verbose)
             for (const auto& t : s.tests)
                 if (!t.passed) std::printf("    FAIL %s\n        %s\n", t.name.c_str(), firstLines(t.message, 4).c_str());
     }
@@ -236,11 +269,12 @@ void writeJunit(const std::string& path, const std::vector<StageResult>& stages)
 
 int main(int argc, char** argv) {
     CLI::App app{"clothlab-grade — per-stage points from the graded tests"};
-    std::vector<std::string> stages;
+    std::vector<std::string> stages, broken;
     std::string points_dir = "tests", json_out, junit_out, expect, message;
     int timeout_s = 60;
     bool quiet = false;
-    app.add_option("--stage", stages, "NN=EXECUTABLE, one per stage to grade")->required();
+    app.add_option("--stage", stages, "NN=EXECUTABLE, one per stage to grade");
+    app.add_option("--broken", broken, "NN=LOGFILE: stage NN did not compile (0 points, the log as message)");
     app.add_option("--points-dir", points_dir, "Folder with NN_name.points.json")->check(CLI::ExistingDirectory);
     app.add_option("--json", json_out, "Write the results as JSON");
     app.add_option("--junit", junit_out, "Write the results as JUnit XML");
@@ -258,6 +292,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "grading stage %s ...\n", spec.substr(0, spec.find('=')).c_str());
         results.push_back(gradeStage(spec, points_dir, timeout_s, tmp));
     }
+    for (const auto& spec : broken) results.push_back(brokenStage(spec, points_dir));
+    std::sort(results.begin(), results.end(), [](const StageResult& a, const StageResult& b) { return a.stage < b.stage; });
+    if (results.empty()) die("nothing to grade: give --stage NN=EXECUTABLE (or --broken)");
     fs::remove_all(tmp);
     printTable(results, !quiet);
     if (!json_out.empty()) writeJson(json_out, results), std::printf("wrote %s\n", json_out.c_str());

@@ -57,5 +57,5 @@ if [[ $code -eq 3 ]] && grep -q "unstable at step" "$tmp/err"; then ok; else bad
 "$exe" run "$root/scenes/chain.json" --steps 10 --quiet --dump "$tmp/state.csv" >/dev/null 2>&1
 if [[ "$(head -1 "$tmp/state.csv")" == "i,x,y,z,vx,vy,vz" && $(wc -l <"$tmp/state.csv") -eq 11 ]]; then ok; else bad "dump: $(head -3 "$tmp/state.csv")"; fi
 
-echo "$pass passed, $fail failed"
+echo "cli checks: $pass ok, $fail failing"
 [[ $fail -eq 0 ]]

@@ -2,8 +2,13 @@
 
 #include <cmath>
 
+#include <limits>
+
+#include "clothlab/core/grid.h"
+#include "clothlab/exercise/02_mfn.h"
 #include "clothlab/sim/forces.h"
-#include "clothlab/sim/rk4.h"
+#include "clothlab/sim/provot.h"
+#include "clothlab/sim/strain.h"
 
 namespace clothlab {
 
@@ -27,6 +32,13 @@ MassSpringModel makeChain(const ChainSpec& c) {
         m.state.w[i] = i == 0 ? 0.0 : 1.0 / c.mass;
         if (i > 0) m.springs.push_back({i - 1, i, c.k, c.l0, c.kd, SpringType::Single});
     }
+    return m;
+}
+
+MassSpringModel makeCloth(const Scene& scene) {
+    MassSpringModel m;
+    m.state = makeGridState(scene.cloth);
+    m.springs = makeClothSprings(m.state.x, scene.cloth.nx, scene.cloth.ny, scene.springs);
     return m;
 }
 
@@ -54,19 +66,33 @@ MassSpringSimulation::MassSpringSimulation(const Scene& scene, MassSpringModel m
     for (const Spring& s : springs_) edges_.emplace_back(s.i, s.j);
     // Only the force terms the scene uses become passes.
     const ForcesSpec& f = scene.forces;
-    if (f.gravity.squaredNorm() > 0.0)
-        addForce("forces: gravity", [this, g = f.gravity](const Matrix3X&, const Matrix3X&, Matrix3X& out) {
-            addGravityForces(state_.w, g, out);
-        });
-    if (f.damping > 0.0)
-        addForce("forces: damping", [c = f.damping](const Matrix3X&, const Matrix3X& v, Matrix3X& out) {
-            addVelocityDamping(v, c, out);
-        });
-    if (!springs_.empty())
-        addForce("forces: springs", [this](const Matrix3X& x, const Matrix3X& v, Matrix3X& out) {
-            addSpringForces(springs_, x, v, out);
-        });
+    if (scene.model == "cloth") {
+        triangles_ = gridTriangles(scene.cloth.nx, scene.cloth.ny);
+        if (f.gravity.squaredNorm() > 0.0 || f.damping > 0.0)  // stage 02, task 2.3
+            addForce(f.damping > 0.0 ? "forces: gravity + damping" : "forces: gravity",
+                     [this, g = f.gravity, c = f.damping](const Matrix3X&, const Matrix3X& v, Matrix3X& out) {
+                         addClothExternalForces(state_.w, v, g, c, out);
+                     });
+        if (!springs_.empty())  // stage 02, task 2.2
+            addForce("forces: springs", [this](const Matrix3X& x, const Matrix3X& v, Matrix3X& out) {
+                addClothSpringForces(springs_, x, v, out);
+            });
+    } else {
+        if (f.gravity.squaredNorm() > 0.0)
+            addForce("forces: gravity", [this, g = f.gravity](const Matrix3X&, const Matrix3X&, Matrix3X& out) {
+                addGravityForces(state_.w, g, out);
+            });
+        if (f.damping > 0.0)
+            addForce("forces: damping", [c = f.damping](const Matrix3X&, const Matrix3X& v, Matrix3X& out) {
+                addVelocityDamping(v, c, out);
+            });
+        if (!springs_.empty())
+            addForce("forces: springs", [this](const Matrix3X& x, const Matrix3X& v, Matrix3X& out) {
+                addSpringForces(springs_, x, v, out);
+            });
+    }
     integrate_pass_ = timer_.add("integrate: " + scene.solver.method);
+    if (scene.provot.enabled && !springs_.empty()) provot_pass_ = timer_.add("provot: strain limit");
     analytic_ = singleSpringAnalytic(scene);
     if (analytic_) {
         anchor_ = scene.spring.anchor;
@@ -81,6 +107,7 @@ void MassSpringSimulation::addForce(const std::string& name, ForceTerm term) {
 
 void MassSpringSimulation::step() {
     double force_seconds = 0.0;
+    // (1) F(x, v): the sum of all force passes, each timed on its own
     const ForceField field = [&](const Matrix3X& x, const Matrix3X& v, Matrix3X& f) {
         f.setZero(3, x.cols());
         for (auto& [id, term] : forces_) {
@@ -89,16 +116,27 @@ void MassSpringSimulation::step() {
             force_seconds += timer_.passes()[static_cast<size_t>(id)].seconds - before;
         }
     };
-    const std::string& method = scene_.solver.method;
     const double dt = scene_.solver.dt;
-    timer_.run(integrate_pass_, [&] {
-        if (method == "explicit_euler") explicitEulerStep(state_.x, state_.v, state_.w, field, dt);
-        else if (method == "symplectic_euler") symplecticEulerStep(state_.x, state_.v, state_.w, field, dt);
-        else if (method == "velocity_verlet") velocityVerletStep(state_.x, state_.v, state_.w, field, dt);
-        else rk4Step(state_.x, state_.v, state_.w, field, dt);
-    });
+    // (2) one step of the chosen integrator
+    timer_.run(integrate_pass_, [&] { integrate(field, dt); });
     timer_.subtract(integrate_pass_, force_seconds);  // the report shows force passes separately
+    // (3) Provot: shorten springs stretched beyond (1 + tau) l0
+    if (provot_pass_ >= 0)
+        timer_.run(provot_pass_, [&] {
+            applyProvotConstraint(springs_, state_.x, state_.v, state_.w, scene_.provot.max_strain, dt);
+        });
     state_.t += dt;
+}
+
+void MassSpringSimulation::integrate(const ForceField& field, double dt) {
+    const std::string& method = scene_.solver.method;
+    State& s = state_;
+    if (method == "explicit_euler") explicitEulerStep(s.x, s.v, s.w, field, dt);
+    else if (method == "symplectic_euler") symplecticEulerStep(s.x, s.v, s.w, field, dt);
+    else if (method == "velocity_verlet") velocityVerletStep(s.x, s.v, s.w, field, dt);
+    else if (method == "rk4") rk4Step(s.x, s.v, s.w, field, dt, rk4_);
+    else if (!implicit_.step(s.x, s.v, s.w, field, springs_, scene_.forces.damping, dt))
+        s.x.setConstant(std::numeric_limits<double>::quiet_NaN());  // failed solve: runSimulation reports it
 }
 
 double MassSpringSimulation::energy() const {
@@ -115,6 +153,11 @@ std::vector<Metric> MassSpringSimulation::metrics() const {
         max_error_ = std::max(max_error_, err);
         m.push_back({"error", err, "m"});
         m.push_back({"max_error", max_error_, "m"});
+    }
+    if (scene_.model == "cloth") {  // super-elasticity
+        const StrainStats strain = springStrain(springs_, state_.x);
+        m.push_back({"max_strain", 100.0 * strain.max, "%"});
+        m.push_back({"rms_strain", 100.0 * strain.rms, "%"});
     }
     return m;
 }

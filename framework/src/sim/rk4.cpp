@@ -2,19 +2,39 @@
 
 namespace clothlab {
 
-void rk4Step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt) {
+void rk4Step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt, Rk4Workspace& ws) {
     const Eigen::Index n = x.cols();
-    Matrix3X f(3, n);
+    ws.f.resize(3, n);
+    // Stage slope k = (vs, w F(xs, vs)); returns nothing, leaves the acceleration in ws.f.
     auto accel = [&](const Matrix3X& xs, const Matrix3X& vs) {
-        force(xs, vs, f);
-        return Matrix3X(f * w.asDiagonal());
+        force(xs, vs, ws.f);
+        ws.f.array().rowwise() *= w.transpose().array();  // a_i = w_i F_i
     };
-    const Matrix3X k1x = v, k1v = accel(x, v);
-    const Matrix3X k2x = v + 0.5 * dt * k1v, k2v = accel(x + 0.5 * dt * k1x, k2x);
-    const Matrix3X k3x = v + 0.5 * dt * k2v, k3v = accel(x + 0.5 * dt * k2x, k3x);
-    const Matrix3X k4x = v + dt * k3v, k4v = accel(x + dt * k3x, k4x);
-    x += dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-    v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+    accel(x, v);                                            // k1 = (v, a(x, v))
+    ws.dx = v;
+    ws.dv = ws.f;
+    ws.xs = x + 0.5 * dt * v;
+    ws.vs = v + 0.5 * dt * ws.f;
+    accel(ws.xs, ws.vs);                                    // k2 at t + dt/2
+    ws.dx += 2.0 * ws.vs;
+    ws.dv += 2.0 * ws.f;
+    ws.xs = x + 0.5 * dt * ws.vs;
+    ws.vs = v + 0.5 * dt * ws.f;
+    accel(ws.xs, ws.vs);                                    // k3 at t + dt/2
+    ws.dx += 2.0 * ws.vs;
+    ws.dv += 2.0 * ws.f;
+    ws.xs = x + dt * ws.vs;
+    ws.vs = v + dt * ws.f;
+    accel(ws.xs, ws.vs);                                    // k4 at t + dt
+    ws.dx += ws.vs;
+    ws.dv += ws.f;
+    x += dt / 6.0 * ws.dx;
+    v += dt / 6.0 * ws.dv;
+}
+
+void rk4Step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt) {
+    Rk4Workspace ws;
+    rk4Step(x, v, w, force, dt, ws);
 }
 
 }  // namespace clothlab

@@ -1,0 +1,162 @@
+// `clothlab study stability|precision SCENE`: sweeps with CSV, PNG plots and a printed table.
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "clothlab/core/input_error.h"
+#include "clothlab/io/scene_json.h"
+#include "clothlab/study/precision.h"
+#include "clothlab/study/stability.h"
+#include "clothlab/study/theory.h"
+#include "commands.h"
+
+namespace clothlab::cli {
+namespace {
+
+/// Progress on stderr: an updating line on a terminal, a line per 10 % otherwise.
+std::function<void(int, int, const std::string&)> progressPrinter(const std::string& what) {
+    const bool tty = isatty(2);
+    return [tty, what, last = -1](int done, int total, const std::string& method) mutable {
+        const int percent = total > 0 ? 100 * done / total : 100;
+        if (tty) {
+            std::cerr << "\r" << what << ": " << done << "/" << total << " runs (" << percent << " %), " << method << "          "
+                      << (done == total ? "\n" : "") << std::flush;
+        } else if (percent / 10 != last / 10 || done == total) {
+            std::cerr << what << ": " << done << "/" << total << " runs (" << percent << " %)\n";
+        }
+        last = percent;
+    };
+}
+
+std::vector<std::string> splitMethods(const std::string& list) {
+    std::vector<std::string> out;
+    std::string cur;
+    for (char c : list + ",") {
+        if (c == ',') {
+            if (!cur.empty()) {
+                const auto& known = solverMethods();
+                if (std::find(known.begin(), known.end(), cur) == known.end())
+                    throw InputError("command line", "--methods", "unknown method \"" + cur + "\"");
+                out.push_back(cur);
+            }
+            cur.clear();
+        } else if (c != ' ') {
+            cur += c;
+        }
+    }
+    if (out.empty()) throw InputError("command line", "--methods", "no method given");
+    return out;
+}
+
+std::string defaultOut(const std::string& scene, const std::string& kind) {
+    return "out/study/" + std::filesystem::path(scene).stem().string() + "-" + kind;
+}
+
+void checkRange(const char* name, double lo, double hi, int count) {
+    if (!(lo > 0.0) || !(hi >= lo)) throw InputError("command line", name, "needs 0 < min <= max");
+    if (count < 1 || count > 1000) throw InputError("command line", name, "count must be between 1 and 1000");
+}
+
+}  // namespace
+
+void addStudyCommand(CLI::App& app, int& exit_code) {
+    (void)exit_code;
+    CLI::App* study = app.add_subcommand("study", "Stability maps and error-vs-run-time studies of the force-based methods");
+    study->require_subcommand(1);
+
+    // ---- study stability ----------------------------------------------------------------------
+    struct StabilityCli {
+        std::string scene, out, methods;
+        std::vector<std::string> sets;
+        double k_min = 0, k_max = 0, dt_min = 0, dt_max = 0, factor = 10;
+        int k_count = 13, dt_count = 13;
+        long long steps = 1000;
+    };
+    auto so = std::make_shared<StabilityCli>();
+    CLI::App* st = study->add_subcommand("stability", "Sweep stiffness k and time step dt per integrator; CSV, PNG maps, table");
+    st->add_option("scene", so->scene, "Scene file (JSON)")->required();
+    st->add_option("--set", so->sets, "Override a scene field (repeatable)");
+    st->add_option("--methods", so->methods, "Comma-separated methods (default: all force-based)");
+    st->add_option("--k-min", so->k_min, "Smallest stiffness, N/m (default: scene k / 100)");
+    st->add_option("--k-max", so->k_max, "Largest stiffness, N/m (default: scene k * 10^4)");
+    st->add_option("--k-count", so->k_count, "Number of stiffness values (log-spaced)");
+    st->add_option("--dt-min", so->dt_min, "Smallest time step, s (default: scene dt / 100)");
+    st->add_option("--dt-max", so->dt_max, "Largest time step, s (default: scene dt * 100)");
+    st->add_option("--dt-count", so->dt_count, "Number of time steps (log-spaced)");
+    st->add_option("--steps", so->steps, "Steps per run")->check(CLI::PositiveNumber);
+    st->add_option("--energy-factor", so->factor, "Unstable if the energy rises by more than this many E_scale")->check(CLI::PositiveNumber);
+    st->add_option("--out", so->out, "Output folder (default: out/study/<scene>-stability)");
+    st->callback([so] {
+        const Scene scene = loadScene(so->scene, so->sets);
+        StabilityOptions o;
+        if (!so->methods.empty()) o.methods = splitMethods(so->methods);
+        const double k = sceneStiffness(scene);
+        o.k_min = so->k_min > 0 ? so->k_min : k / 100;
+        o.k_max = so->k_max > 0 ? so->k_max : k * 1e4;
+        o.dt_min = so->dt_min > 0 ? so->dt_min : scene.solver.dt / 100;
+        o.dt_max = so->dt_max > 0 ? so->dt_max : scene.solver.dt * 100;
+        o.k_count = so->k_count, o.dt_count = so->dt_count;
+        checkRange("--k-min/--k-max/--k-count", o.k_min, o.k_max, o.k_count);
+        checkRange("--dt-min/--dt-max/--dt-count", o.dt_min, o.dt_max, o.dt_count);
+        o.criteria.steps = so->steps;
+        o.criteria.energy_factor = so->factor;
+        o.progress = progressPrinter("stability");
+        const std::string out = so->out.empty() ? defaultOut(so->scene, "stability") : so->out;
+        std::filesystem::create_directories(out);
+        std::cout << "stability study of " << scene.file << ": " << o.methods.size() << " methods x " << o.k_count << " k in [" << o.k_min
+                  << ", " << o.k_max << "] N/m x " << o.dt_count << " dt in [" << o.dt_min << ", " << o.dt_max << "] s, " << o.criteria.steps
+                  << " steps per run\n";
+        const StabilityResult r = stabilitySweep(scene, o);
+        printStabilityTable(std::cout, r);
+        writeStabilityCsv(out + "/stability.csv", r);
+        std::cout << "wrote " << out << "/stability.csv\n";
+        for (const std::string& png : plotStability(std::filesystem::absolute(out).string(), r)) std::cout << "wrote " << png << "\n";
+    });
+
+    // ---- study precision ----------------------------------------------------------------------
+    struct PrecisionCli {
+        std::string scene, out, methods, reference_method = "rk4";
+        std::vector<std::string> sets;
+        double dt_min = 0, dt_max = 0, end_time = 1.0, reference_dt = 0;
+        int dt_count = 7;
+    };
+    auto po = std::make_shared<PrecisionCli>();
+    CLI::App* pr = study->add_subcommand("precision", "Error at a fixed end time against wall time per method and dt; CSV, PNG, table");
+    pr->add_option("scene", po->scene, "Scene file (JSON)")->required();
+    pr->add_option("--set", po->sets, "Override a scene field (repeatable)");
+    pr->add_option("--methods", po->methods, "Comma-separated methods (default: all force-based)");
+    pr->add_option("--dt-min", po->dt_min, "Smallest time step, s (default: scene dt / 10)");
+    pr->add_option("--dt-max", po->dt_max, "Largest time step, s (default: scene dt * 10)");
+    pr->add_option("--dt-count", po->dt_count, "Number of time steps (log-spaced)");
+    pr->add_option("--end-time", po->end_time, "Simulated time T at which the error is measured, s")->check(CLI::PositiveNumber);
+    pr->add_option("--reference-method", po->reference_method, "Method of the reference run (no analytic solution)");
+    pr->add_option("--reference-dt", po->reference_dt, "Time step of the reference run, s (default: dt-min / 8)");
+    pr->add_option("--out", po->out, "Output folder (default: out/study/<scene>-precision)");
+    pr->callback([po] {
+        const Scene scene = loadScene(po->scene, po->sets);
+        PrecisionOptions o;
+        if (!po->methods.empty()) o.methods = splitMethods(po->methods);
+        o.dt_min = po->dt_min > 0 ? po->dt_min : scene.solver.dt / 10;
+        o.dt_max = po->dt_max > 0 ? po->dt_max : scene.solver.dt * 10;
+        o.dt_count = po->dt_count;
+        checkRange("--dt-min/--dt-max/--dt-count", o.dt_min, o.dt_max, o.dt_count);
+        if (o.dt_max > po->end_time) throw InputError("command line", "--dt-max", "must not exceed --end-time");
+        o.end_time = po->end_time;
+        o.reference_method = splitMethods(po->reference_method).front();
+        o.reference_dt = po->reference_dt;
+        o.progress = progressPrinter("precision");
+        const std::string out = po->out.empty() ? defaultOut(po->scene, "precision") : po->out;
+        std::filesystem::create_directories(out);
+        std::cout << "precision study of " << scene.file << ": " << o.methods.size() << " methods x " << o.dt_count << " dt in [" << o.dt_min
+                  << ", " << o.dt_max << "] s, error at T = " << o.end_time << " s\n";
+        const PrecisionResult r = precisionStudy(scene, o);
+        printPrecisionTable(std::cout, r);
+        writePrecisionCsv(out + "/precision.csv", r);
+        std::cout << "wrote " << out << "/precision.csv\n";
+        for (const std::string& png : plotPrecision(std::filesystem::absolute(out).string(), r)) std::cout << "wrote " << png << "\n";
+    });
+}
+
+}  // namespace clothlab::cli

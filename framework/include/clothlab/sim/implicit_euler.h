@@ -1,0 +1,89 @@
+/// @file implicit_euler.h
+/// @brief Linearised backward (implicit) Euler after Baraff & Witkin (1998): the stiff-case reference.
+///
+/// Backward Euler takes the forces at the END of the step,
+/// \f$ v^{n+1} = v^n + \Delta t\,M^{-1} f(x^{n+1}, v^{n+1}) \f$, \f$ x^{n+1} = x^n + \Delta t\,v^{n+1} \f$.
+/// Linearising f around the current state (one Newton step) gives one sparse linear system per step:
+/// \f[ \Big(M - \Delta t\,\frac{\partial f}{\partial v} - \Delta t^2\,\frac{\partial f}{\partial x}\Big)\,\Delta v
+///     = \Delta t\,\Big(f(x^n, v^n) + \Delta t\,\frac{\partial f}{\partial x}\,v^n\Big),\qquad
+///     v^{n+1} = v^n + \Delta v,\quad x^{n+1} = x^n + \Delta t\,v^{n+1}. \f]
+/// It is stable for every Δt on a linear spring system, at the price of artificial damping:
+/// an undamped oscillation loses energy by the factor 1/(1 + ω²Δt²) per step.
+#pragma once
+#include <array>
+#include <vector>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include "clothlab/core/spring.h"
+#include "clothlab/exercise/01_hooke.h"
+
+namespace clothlab {
+
+/// Sparse matrix type of the implicit solver (column-major, double).
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// The 3x3 Jacobian blocks of one spring (formulas at addSpringJacobians()): \f$ K_{jj} = \partial\vec f_j/\partial\vec x_j \f$
+/// (N/m) and \f$ D_{jj} = \partial\vec f_j/\partial\vec v_j \f$ (N s/m); the other blocks are
+/// \f$ K_{ii} = K_{jj} \f$, \f$ K_{ij} = K_{ji} = -K_{jj} \f$ and the same for D. Zero for a spring shorter than 10⁻¹² m.
+/// @param s    the spring
+/// @param x    positions, 3 x N, m
+/// @param Kjj  set to ∂f_j/∂x_j, N/m
+/// @param Djj  set to ∂f_j/∂v_j, N s/m
+void springJacobianBlocks(const Spring& s, const Matrix3X& x, Eigen::Matrix3d& Kjj, Eigen::Matrix3d& Djj);
+
+/// Adds the force Jacobians of the springs to triplet lists, 3x3 blocks per particle pair.
+///
+/// For a spring (i, j) with \f$ \vec d = \vec x_j - \vec x_i \f$, \f$ l = \|\vec d\| \f$, \f$ \hat n = \vec d/l \f$:
+/// \f[ K_{jj} = \frac{\partial \vec f_j}{\partial \vec x_j} = -k\Big[\hat n\hat n^T + \max\big(0, 1 - \tfrac{l_0}{l}\big)\,(I - \hat n\hat n^T)\Big],
+///     \qquad K_{ii} = K_{jj},\quad K_{ij} = K_{ji} = -K_{jj} \f]
+/// (the transverse term is clamped at zero for compressed springs so that the system stays positive
+/// definite, as in Choi & Ko 2002), and for the damping along the spring
+/// \f$ D_{jj} = \partial \vec f_j / \partial \vec v_j = -k_d\,\hat n\hat n^T \f$, \f$ D_{ii} = D_{jj} \f$, \f$ D_{ij} = D_{ji} = -D_{jj} \f$.
+/// A spring shorter than 10⁻¹² m has no direction: its blocks are zero (still listed, so that the
+/// sparsity pattern never changes).
+/// @param springs  the springs
+/// @param x        positions, 3 x N, m
+/// @param index    particle → first row of its 3 unknowns, or −1 for pinned particles (left out)
+/// @param K        triplets of ∂f/∂x, N/m (appended to)
+/// @param D        triplets of ∂f/∂v, N s/m (appended to)
+void addSpringJacobians(const std::vector<Spring>& springs, const Matrix3X& x, const std::vector<int>& index,
+                        std::vector<Eigen::Triplet<double>>& K, std::vector<Eigen::Triplet<double>>& D);
+
+/// The linearised backward Euler stepper; keeps the factorisation's symbolic analysis between steps.
+class ImplicitEulerSolver {
+public:
+    /// One step (formula in the file comment). Pinned particles (w = 0) keep their velocity and are
+    /// left out of the system. The forces f(x, v) come from `force` (all force passes of the scene);
+    /// the Jacobian from the springs and the global damping c (\f$ \partial f_i/\partial v_i \mathrel{+}= -c I \f$).
+    /// The system matrix is symmetric positive definite and solved by a sparse Cholesky factorisation
+    /// (Eigen::SimplicialLDLT).
+    /// @param x, v     positions (m) and velocities (m/s), 3 x N (updated in place)
+    /// @param w        inverse masses, N, 1/kg
+    /// @param force    the force field F(x, v), N
+    /// @param springs  the springs whose Jacobians enter the matrix
+    /// @param c        global velocity damping, N s/m
+    /// @param dt       time step Δt, s
+    /// @return         false if the factorisation failed (the state is then left unchanged)
+    bool step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, const std::vector<Spring>& springs,
+              double c, double dt);
+
+private:
+    /// Builds the sparsity pattern of A (mass diagonal + one 3x3 block per spring end pair) and the
+    /// offsets of every block entry in A's value array, then analyses the pattern.
+    void buildPattern(const VectorX& w, const std::vector<Spring>& springs);
+    /// Offset of entry (r, c) in A_'s value array.
+    int offset(int r, int c);
+
+    std::vector<int> index_;                   ///< particle → first unknown, −1 if pinned
+    std::vector<int> diag_;                    ///< per unknown: offset of its diagonal entry in A_
+    std::vector<std::array<int, 36>> blocks_;  ///< per spring: offsets of its (a,a), (b,b), (a,b), (b,a) blocks, −1 if absent
+    size_t pattern_springs_ = 0;               ///< number of springs the pattern was built for
+    SparseMatrix A_;                           ///< the system matrix
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt_; ///< its factorisation
+    Matrix3X f_;                               ///< forces at the start of the step
+    VectorX b_;                                ///< right-hand side
+};
+
+}  // namespace clothlab

@@ -1,0 +1,237 @@
+// `clothlab study stability`: which (k, Δt) each integrator survives, against theory.
+#include "clothlab/study/stability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+#include "clothlab/core/input_error.h"
+#include "clothlab/sim/simulation.h"
+#include "clothlab/study/plot.h"
+#include "clothlab/study/theory.h"
+
+namespace clothlab {
+namespace {
+
+double energyOf(const Simulation& sim, bool* found) {
+    for (const Metric& m : sim.metrics())
+        if (m.name == "energy") return *found = true, m.value;
+    *found = false;
+    return 0.0;
+}
+
+Scene withMethod(Scene s, const std::string& method, double dt) {
+    s.solver.method = method;
+    s.solver.dt = dt;
+    return s;
+}
+
+std::string fmt(double x, int precision = 3) {
+    std::ostringstream s;
+    s << std::setprecision(precision) << x;
+    return s.str();
+}
+
+}  // namespace
+
+StabilityVerdict classifyStability(const Scene& scene, const StabilityCriteria& criteria) {
+    StabilityVerdict v;
+    auto sim = makeSimulation(scene);
+    const State& s = sim->state();
+    // Scales: extent L of the initial positions, total free mass, initial energy.
+    const double extent = s.size() > 0 ? (s.x.rowwise().maxCoeff() - s.x.rowwise().minCoeff()).norm() : 0.0;
+    double mass = 0.0;
+    for (int i = 0; i < s.size(); ++i) mass += s.w[i] > 0.0 ? 1.0 / s.w[i] : 0.0;
+    bool has_energy = false;
+    const double e0 = energyOf(*sim, &has_energy);
+    const double e_scale = std::max({std::abs(e0), mass * scene.forces.gravity.norm() * extent, 1e-12});
+    const double bound = 1e3 * (extent + 1.0);
+    const long long check_every = std::max<long long>(1, criteria.steps / 100);
+    auto unstable = [&](const std::string& why) {
+        v.stable = false;
+        v.reason = why;
+        return v;
+    };
+    for (v.steps = 1; v.steps <= criteria.steps; ++v.steps) {
+        sim->step();
+        if (!s.isFinite()) return unstable("NaN or Inf");
+        if (s.x.colwise().norm().maxCoeff() > bound) return unstable("left |x| < " + fmt(bound) + " m");
+        if (has_energy && (v.steps % check_every == 0 || v.steps == criteria.steps)) {
+            bool found = false;
+            const double growth = (energyOf(*sim, &found) - e0) / e_scale;
+            v.energy_growth = std::max(v.energy_growth, growth);
+            if (!std::isfinite(growth)) return unstable("energy NaN or Inf");
+            if (growth > criteria.energy_factor) return unstable("energy grew by " + fmt(growth) + " E_scale");
+        }
+    }
+    v.steps = criteria.steps;
+    return v;
+}
+
+std::vector<double> logSpace(double lo, double hi, int count) {
+    std::vector<double> v;
+    for (int i = 0; i < count; ++i)
+        v.push_back(count == 1 ? lo : lo * std::pow(hi / lo, static_cast<double>(i) / (count - 1)));
+    return v;
+}
+
+StabilityResult stabilitySweep(const Scene& scene, const StabilityOptions& o) {
+    StabilityResult r;
+    r.scene = scene.file;
+    r.model = scene.model;
+    r.k_ref = sceneStiffness(scene);
+    r.omega_ref = maxAngularFrequency(scene);
+    {
+        const State s = makeSimulation(withMethod(scene, "symplectic_euler", scene.solver.dt))->state();
+        r.min_mass = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < s.size(); ++i) if (s.w[i] > 0.0) r.min_mass = std::min(r.min_mass, 1.0 / s.w[i]);
+    }
+    const std::vector<double> ks = logSpace(o.k_min, o.k_max, o.k_count), dts = logSpace(o.dt_min, o.dt_max, o.dt_count);
+    const int total = static_cast<int>(o.methods.size() * ks.size() * dts.size());
+    int done = 0;
+    for (const std::string& method : o.methods)
+        for (double k : ks) {
+            const Scene sk = withStiffness(scene, k);
+            const double omega = r.k_ref > 0.0 ? r.omega_ref * std::sqrt(k / r.k_ref) : 0.0;
+            for (double dt : dts) {
+                StabilityPoint p{method, k, dt, omega, {}};
+                p.verdict = classifyStability(withMethod(sk, method, dt), o.criteria);
+                r.points.push_back(p);
+                if (o.progress) o.progress(++done, total, method);
+            }
+        }
+    return r;
+}
+
+double measureCriticalDt(const Scene& scene, const std::string& method, double dt_lo, double dt_hi,
+                         const StabilityCriteria& criteria, double rel_tol) {
+    auto stable = [&](double dt) { return classifyStability(withMethod(scene, method, dt), criteria).stable; };
+    if (!stable(dt_lo)) return -1.0;
+    if (stable(dt_hi)) return std::numeric_limits<double>::infinity();
+    while (dt_hi / dt_lo > 1.0 + rel_tol) {
+        const double mid = std::sqrt(dt_lo * dt_hi);
+        (stable(mid) ? dt_lo : dt_hi) = mid;
+    }
+    return std::sqrt(dt_lo * dt_hi);
+}
+
+void writeStabilityCsv(const std::string& path, const StabilityResult& r) {
+    std::ofstream out(path);
+    if (!out) throw InputError(path, "(file)", "cannot write the file");
+    out << std::setprecision(10) << "method,k,dt,omega_max_dt,stable,steps,energy_growth,reason\n";
+    for (const StabilityPoint& p : r.points)
+        out << p.method << "," << p.k << "," << p.dt << "," << p.omega_max * p.dt << "," << (p.verdict.stable ? 1 : 0) << ","
+            << p.verdict.steps << "," << p.verdict.energy_growth << ",\"" << p.verdict.reason << "\"\n";
+}
+
+void printStabilityTable(std::ostream& out, const StabilityResult& r) {
+    out << "stability map of " << r.scene << " (model " << r.model << "): '.' stable, '#' unstable, "
+        << "'+'/'x' where theory disagrees (stable/unstable measured)\n"
+        << "omega_max = " << fmt(r.omega_ref, 4) << " rad/s at k = " << fmt(r.k_ref, 4)
+        << " N/m (largest eigenvalue of M^-1 K; scales with sqrt(k))\n";
+    std::vector<std::string> methods;
+    for (const auto& p : r.points)
+        if (methods.empty() || methods.back() != p.method) methods.push_back(p.method);
+    for (const std::string& m : methods) {
+        std::vector<double> ks, dts;
+        for (const auto& p : r.points)
+            if (p.method == m) {
+                if (std::find(ks.begin(), ks.end(), p.k) == ks.end()) ks.push_back(p.k);
+                if (std::find(dts.begin(), dts.end(), p.dt) == dts.end()) dts.push_back(p.dt);
+            }
+        int agree = 0, cells = 0;
+        out << "\n" << m << "  (rows: dt [s], columns: k [N/m] from " << fmt(ks.front()) << " to " << fmt(ks.back()) << ")\n";
+        for (auto dt = dts.rbegin(); dt != dts.rend(); ++dt) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%10.3g  ", *dt);
+            out << buf;
+            for (const auto& p : r.points) {
+                if (p.method != m || p.dt != *dt) continue;
+                const double limit = theoreticalCriticalDt(m, p.omega_max);
+                const bool known = limit >= 0.0 && p.omega_max > 0.0;
+                const bool theory_stable = p.dt < limit;
+                char c = p.verdict.stable ? '.' : '#';
+                if (known && m != "explicit_euler") {
+                    ++cells;
+                    if (theory_stable == p.verdict.stable) ++agree;
+                    else c = p.verdict.stable ? '+' : 'x';
+                }
+                out << c;
+            }
+            out << "\n";
+        }
+        if (m == "explicit_euler")
+            out << "theory: undamped explicit Euler grows by sqrt(1 + w^2 dt^2) per step - unstable for every dt; "
+                   "the map shows where it grew beyond the energy factor within the run\n";
+        else if (m == "symplectic_euler" || m == "velocity_verlet")
+            out << "theory: stable iff omega_max dt < 2 (one spring: k < 4 m / dt^2); agrees in " << agree << " of " << cells << " cells\n";
+        else if (m == "rk4")
+            out << "theory: stable iff omega_max dt < 2 sqrt(2); agrees in " << agree << " of " << cells << " cells\n";
+        else if (m == "implicit_euler")
+            out << "theory: stable for every dt (amplitude x 1/sqrt(1 + w^2 dt^2) per step); agrees in " << agree << " of " << cells << " cells\n";
+    }
+    out << "\nProvot's estimate: k_crit = m pi^2 / dt^2 (the slides print m dt^2 / pi^2 - upside down)";
+    if (std::isfinite(r.min_mass)) out << "; here m = " << fmt(r.min_mass) << " kg";
+    out << "\n";
+}
+
+std::vector<std::string> plotStability(const std::string& dir, const StabilityResult& r) {
+    std::vector<std::string> methods;
+    for (const auto& p : r.points)
+        if (methods.empty() || methods.back() != p.method) methods.push_back(p.method);
+    // One data file per method: k dt stable
+    for (const std::string& m : methods) {
+        std::ofstream d(dir + "/stability_" + m + ".dat");
+        d << std::setprecision(10) << "# k dt stable\n";
+        for (const auto& p : r.points)
+            if (p.method == m) d << p.k << " " << p.dt << " " << (p.verdict.stable ? 1 : 0) << "\n";
+    }
+    const std::string w = fmt(r.omega_ref, 10), kr = fmt(r.k_ref, 10);
+    double k_lo = INFINITY, k_hi = 0, dt_lo = INFINITY, dt_hi = 0;
+    for (const auto& p : r.points)
+        k_lo = std::min(k_lo, p.k), k_hi = std::max(k_hi, p.k), dt_lo = std::min(dt_lo, p.dt), dt_hi = std::max(dt_hi, p.dt);
+    std::ostringstream common;
+    common << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+           << "set xlabel 'stiffness k [N/m]'\nset ylabel 'time step {/Symbol D}t [s]'\nset key below maxrows 2 font ',8'\n"
+           << "set xrange [" << k_lo / 1.6 << ":" << k_hi * 1.6 << "]\nset yrange [" << dt_lo / 1.6 << ":" << dt_hi * 1.6 << "]\n"
+           << "w(k) = " << w << " * sqrt(k / " << kr << ")\n";
+    auto panel = [&](const std::string& m) {
+        std::ostringstream s;
+        const std::string file = "stability_" + m + ".dat";
+        std::string title = m;
+        for (auto& ch : title) if (ch == '_') ch = ' ';
+        s << "set title '" << title << "'\n"
+          << "plot '" << file << "' using 1:($3 > 0 ? $2 : 1/0) with points pt 7 ps 0.8 lc rgb '#2a9d3a' title 'stable', \\\n"
+          << "     '" << file << "' using 1:($3 > 0 ? 1/0 : $2) with points pt 5 ps 0.7 lc rgb '#d62728' title 'unstable', \\\n"
+          << "     2 / w(x) with lines lw 2 lc rgb 'black' title '{/Symbol w}_{max}{/Symbol D}t = 2', \\\n"
+          << "     2*sqrt(2) / w(x) with lines lw 2 dt 2 lc rgb '#555555' title '{/Symbol w}_{max}{/Symbol D}t = 2{/Symbol \\326}2 (RK4)', \\\n"
+          << "     pi / w(x) with lines lw 2 dt 3 lc rgb '#1f5fbf' title 'Provot: k = m{/Symbol p}^2/{/Symbol D}t^2'\n";
+        return s.str();
+    };
+    std::vector<std::string> written;
+    if (!gnuplotAvailable()) {
+        runGnuplot(dir + "/stability.gp", "");  // prints the note
+        return written;
+    }
+    for (const std::string& m : methods) {
+        std::ostringstream s;
+        s << "set terminal pngcairo size 640,480 font ',10'\nset output 'stability_" << m << ".png'\n" << common.str() << panel(m);
+        if (runGnuplot(dir + "/stability_" + m + ".gp", "cd '" + dir + "'\n" + s.str())) written.push_back(dir + "/stability_" + m + ".png");
+    }
+    std::ostringstream all;
+    const int n = static_cast<int>(methods.size()), cols = std::min(n, 3), rows = (n + cols - 1) / cols;
+    all << "cd '" << dir << "'\nset terminal pngcairo size " << 400 * cols << "," << 380 * rows + 30 << " font ',9'\n"
+        << "set output 'stability.png'\n" << common.str() << "set multiplot layout " << rows << "," << cols
+        << " title '" << r.model << ": stability maps (" << r.scene << ")'\n";
+    for (const std::string& m : methods) all << panel(m);
+    all << "unset multiplot\n";
+    if (runGnuplot(dir + "/stability.gp", all.str())) written.push_back(dir + "/stability.png");
+    return written;
+}
+
+}  // namespace clothlab

@@ -1,0 +1,337 @@
+// Graded tests of stage 02 — cloth as a mass-spring network (Masse-Feder-Netzwerk).
+// Test names start with the task they check (Task2_1 = exercise 2.1). Points: 02_mfn.points.json.
+// Each task is graded on its own: force tests build their springs here, not with your makeClothSprings.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "clothlab/core/grid.h"
+#include "clothlab/exercise/01_hooke.h"
+#include "clothlab/exercise/02_mfn.h"
+
+using namespace clothlab;
+
+namespace {
+
+std::string str(const Vec3& v) {
+    std::ostringstream s;
+    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+    return s.str();
+}
+
+// Positions of a vertical nx x ny grid, width x height metres, particle (c, r) at (c dx, -r dy, 0).
+Matrix3X gridPositions(int nx, int ny, double width, double height) {
+    ClothSpec spec;
+    spec.nx = nx, spec.ny = ny, spec.width = width, spec.height = height;
+    return makeGridState(spec).x;
+}
+
+ClothSprings only(bool structural, bool shear, bool bending) {
+    ClothSprings t;
+    t.structural = {structural, 100.0, 0.1};
+    t.shear = {shear, 50.0, 0.2};
+    t.bending = {bending, 10.0, 0.3};
+    return t;
+}
+
+int countType(const std::vector<Spring>& s, SpringType type) {
+    return static_cast<int>(std::count_if(s.begin(), s.end(), [&](const Spring& sp) { return sp.type == type; }));
+}
+
+// The closed-form counts of the task sheet.
+int structuralCount(int nx, int ny) { return (nx - 1) * ny + nx * (ny - 1); }
+int shearCount(int nx, int ny) { return 2 * (nx - 1) * (ny - 1); }
+int bendingCount(int nx, int ny) { return std::max(0, nx - 2) * ny + nx * std::max(0, ny - 2); }
+
+const std::vector<std::pair<int, int>> kSizes = {{2, 2}, {3, 5}, {7, 4}, {10, 10}, {2, 9}};
+
+// A small cloth, distorted and moving, for the force tests: positions, velocities and
+// springs (structural, shear, bending) built here, rest lengths of the undistorted grid.
+struct MovingCloth {
+    int nx = 4, ny = 3;
+    Matrix3X x, v;
+    std::vector<Spring> springs;
+    explicit MovingCloth(double kd = 0.7) {
+        const Matrix3X x0 = gridPositions(nx, ny, 1.5, 1.0);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> u(-0.1, 0.1);
+        x = x0.unaryExpr([&](double a) { return a + u(rng); });
+        v = Matrix3X::Zero(3, nx * ny).unaryExpr([&](double) { return 10.0 * u(rng); });
+        auto add = [&](int i, int j, double k, SpringType t) {
+            springs.push_back({i, j, k, (x0.col(j) - x0.col(i)).norm(), kd, t});
+        };
+        for (int r = 0; r < ny; ++r)
+            for (int c = 0; c < nx; ++c) {
+                const int i = gridIndex(c, r, nx);
+                if (c + 1 < nx) add(i, gridIndex(c + 1, r, nx), 300.0, SpringType::Structural);
+                if (r + 1 < ny) add(i, gridIndex(c, r + 1, nx), 300.0, SpringType::Structural);
+                if (c + 1 < nx && r + 1 < ny) add(i, gridIndex(c + 1, r + 1, nx), 120.0, SpringType::Shear);
+                if (c + 1 < nx && r + 1 < ny) add(gridIndex(c + 1, r, nx), gridIndex(c, r + 1, nx), 120.0, SpringType::Shear);
+                if (c + 2 < nx) add(i, gridIndex(c + 2, r, nx), 20.0, SpringType::Bending);
+            }
+    }
+};
+
+// Spring energy Σ ½ k (|x_j − x_i| − l0)², computed here (not with your code).
+double springEnergy(const std::vector<Spring>& springs, const Matrix3X& x) {
+    double e = 0.0;
+    for (const Spring& s : springs) {
+        const double d = (x.col(s.j) - x.col(s.i)).norm() - s.l0;
+        e += 0.5 * s.k * d * d;
+    }
+    return e;
+}
+
+}  // namespace
+
+// ================================ Task 2.1: the springs of the grid ==========================
+
+TEST(Task2_1_ClothSprings, StructuralCountMatchesFormula) {
+    for (auto [nx, ny] : kSizes) {
+        const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(true, false, false));
+        EXPECT_EQ(countType(s, SpringType::Structural), structuralCount(nx, ny))
+            << nx << " x " << ny << " grid: want (nx-1) ny + nx (ny-1) = " << structuralCount(nx, ny)
+            << " structural springs (Strukturfedern, to the right and downward neighbour)";
+        EXPECT_EQ(static_cast<int>(s.size()), structuralCount(nx, ny))
+            << nx << " x " << ny << ": only structural springs are enabled; every spring must have type Structural";
+    }
+}
+
+TEST(Task2_1_ClothSprings, ShearCountMatchesFormula) {
+    for (auto [nx, ny] : kSizes) {
+        const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(false, true, false));
+        EXPECT_EQ(countType(s, SpringType::Shear), shearCount(nx, ny))
+            << nx << " x " << ny << " grid: want 2 (nx-1)(ny-1) = " << shearCount(nx, ny)
+            << " shear springs (Scherfedern: BOTH diagonals of every cell)";
+        EXPECT_EQ(static_cast<int>(s.size()), shearCount(nx, ny)) << nx << " x " << ny << ": only shear springs are enabled";
+    }
+}
+
+TEST(Task2_1_ClothSprings, BendingCountMatchesFormula) {
+    for (auto [nx, ny] : kSizes) {
+        const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(false, false, true));
+        EXPECT_EQ(countType(s, SpringType::Bending), bendingCount(nx, ny))
+            << nx << " x " << ny << " grid: want (nx-2) ny + nx (ny-2) = " << bendingCount(nx, ny)
+            << " bending springs (Biegefedern, to the neighbours TWO apart, right and down; none where the grid is too small)";
+        EXPECT_EQ(static_cast<int>(s.size()), bendingCount(nx, ny)) << nx << " x " << ny << ": only bending springs are enabled";
+    }
+}
+
+TEST(Task2_1_ClothSprings, OnlyEnabledTypesAreBuilt) {
+    const Matrix3X x = gridPositions(5, 4, 1.0, 1.0);
+    EXPECT_TRUE(makeClothSprings(x, 5, 4, only(false, false, false)).empty())
+        << "with every type disabled there must be no springs";
+    const auto all = makeClothSprings(x, 5, 4, only(true, true, true));
+    EXPECT_EQ(countType(all, SpringType::Structural), structuralCount(5, 4)) << "all types enabled: structural count";
+    EXPECT_EQ(countType(all, SpringType::Shear), shearCount(5, 4)) << "all types enabled: shear count";
+    EXPECT_EQ(countType(all, SpringType::Bending), bendingCount(5, 4)) << "all types enabled: bending count";
+    const auto no_shear = makeClothSprings(x, 5, 4, only(true, false, true));
+    EXPECT_EQ(countType(no_shear, SpringType::Shear), 0) << "shear disabled (types.shear.enabled == false) but shear springs were built";
+    EXPECT_EQ(static_cast<int>(no_shear.size()), structuralCount(5, 4) + bendingCount(5, 4))
+        << "structural + bending enabled, shear disabled: wrong number of springs";
+}
+
+TEST(Task2_1_ClothSprings, ConnectsTheRightNeighbours) {
+    const int nx = 6, ny = 5;
+    const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(true, true, true));
+    ASSERT_FALSE(s.empty());
+    for (const Spring& sp : s) {
+        ASSERT_TRUE(sp.i >= 0 && sp.j >= 0 && sp.i < nx * ny && sp.j < nx * ny)
+            << "spring (" << sp.i << ", " << sp.j << ") has an index outside 0.." << nx * ny - 1;
+        const int dc = std::abs(sp.i % nx - sp.j % nx), dr = std::abs(sp.i / nx - sp.j / nx);
+        const std::string where = "spring between particle " + std::to_string(sp.i) + " (c " + std::to_string(sp.i % nx) + ", r " +
+                                  std::to_string(sp.i / nx) + ") and " + std::to_string(sp.j) + " (c " + std::to_string(sp.j % nx) +
+                                  ", r " + std::to_string(sp.j / nx) + ") on a " + std::to_string(nx) + " x " + std::to_string(ny) + " grid";
+        if (sp.type == SpringType::Structural)
+            EXPECT_EQ(dc + dr, 1) << where << ": a structural spring joins direct neighbours (one column or one row apart)";
+        else if (sp.type == SpringType::Shear)
+            EXPECT_TRUE(dc == 1 && dr == 1) << where << ": a shear spring joins diagonal neighbours";
+        else if (sp.type == SpringType::Bending)
+            EXPECT_TRUE((dc == 2 && dr == 0) || (dc == 0 && dr == 2)) << where << ": a bending spring joins particles two apart in a row or column";
+        else
+            ADD_FAILURE() << where << ": type must be Structural, Shear or Bending";
+    }
+}
+
+TEST(Task2_1_ClothSprings, NoDuplicateOrSelfSprings) {
+    for (auto [nx, ny] : kSizes) {
+        const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(true, true, true));
+        std::set<std::pair<int, int>> seen;
+        for (const Spring& sp : s) {
+            EXPECT_NE(sp.i, sp.j) << "spring from particle " << sp.i << " to itself";
+            EXPECT_TRUE(seen.insert({std::min(sp.i, sp.j), std::max(sp.i, sp.j)}).second)
+                << nx << " x " << ny << ": particles " << sp.i << " and " << sp.j << " are joined twice (each pair at most once)";
+        }
+    }
+}
+
+TEST(Task2_1_ClothSprings, RestLengthsFromInitialPositions) {
+    // A rectangular grid: dx = 3/3 = 1 m, dy = 1/2 = 0.5 m.
+    const int nx = 4, ny = 3;
+    const auto s = makeClothSprings(gridPositions(nx, ny, 3.0, 1.0), nx, ny, only(true, true, true));
+    ASSERT_FALSE(s.empty());
+    for (const Spring& sp : s) {
+        const bool horizontal = sp.i / nx == sp.j / nx, vertical = sp.i % nx == sp.j % nx;
+        double want = 0.0;
+        if (sp.type == SpringType::Structural) want = horizontal ? 1.0 : 0.5;
+        if (sp.type == SpringType::Shear) want = std::sqrt(1.0 + 0.25);
+        if (sp.type == SpringType::Bending) want = horizontal ? 2.0 : (vertical ? 1.0 : -1.0);
+        EXPECT_NEAR(sp.l0, want, 1e-12) << "spring " << sp.i << "-" << sp.j << " on a grid with dx = 1 m, dy = 0.5 m: rest length (Ruhelänge) must be "
+                                        << want << " m, the initial distance of its particles";
+    }
+    // A distorted grid: l0 is the distance of the given positions, not a grid constant.
+    Matrix3X x = gridPositions(nx, ny, 3.0, 1.0);
+    for (int i = 0; i < nx * ny; ++i) x.col(i) += Vec3(0.05 * i, 0.02 * (i % 3), -0.03 * i * i / 10.0);
+    for (const Spring& sp : makeClothSprings(x, nx, ny, only(true, true, true)))
+        EXPECT_NEAR(sp.l0, (x.col(sp.j) - x.col(sp.i)).norm(), 1e-12)
+            << "positions not on a regular grid: l0 of spring " << sp.i << "-" << sp.j << " must be |x_j - x_i| of the given positions";
+}
+
+TEST(Task2_1_ClothSprings, StiffnessAndDampingPerType) {
+    const auto s = makeClothSprings(gridPositions(5, 5, 1.0, 1.0), 5, 5, only(true, true, true));
+    ASSERT_FALSE(s.empty());
+    for (const Spring& sp : s) {
+        const double k = sp.type == SpringType::Structural ? 100.0 : sp.type == SpringType::Shear ? 50.0 : 10.0;
+        const double kd = sp.type == SpringType::Structural ? 0.1 : sp.type == SpringType::Shear ? 0.2 : 0.3;
+        EXPECT_EQ(sp.k, k) << "spring " << sp.i << "-" << sp.j << ": each type takes k from its own group "
+                           << "(structural 100, shear 50, bending 10 N/m here)";
+        EXPECT_EQ(sp.kd, kd) << "spring " << sp.i << "-" << sp.j << ": each type takes kd from its own group (0.1, 0.2, 0.3 here)";
+    }
+}
+
+// ================================ Task 2.2: spring forces =====================================
+
+TEST(Task2_2_SpringForces, OneSpringMatchesHookeAndDamping) {
+    Matrix3X x = Matrix3X::Zero(3, 2), v = Matrix3X::Zero(3, 2), f = Matrix3X::Zero(3, 2);
+    x.col(1) = Vec3(0, 0, 2);  // particle 1 at (0, 0, 2): stretched by 1
+    v.col(0) = Vec3(0, 0, 1);  // particle 0 moves with (0, 0, 1) towards particle 1
+    addClothSpringForces({{0, 1, 10.0, 1.0, 2.0, SpringType::Structural}}, x, v, f);
+    // Hooke: -10 * 1 along +z on particle 1; damping: relative velocity -1 along +z -> +2.
+    EXPECT_TRUE(f.col(1).isApprox(Vec3(0, 0, -8), 1e-12))
+        << "force on particle 1 (p1 = x_j): want hookeForce + springDampingForce = (0,0,-10) + (0,0,2) = (0,0,-8), got " << str(f.col(1));
+    EXPECT_TRUE(f.col(0).isApprox(Vec3(0, 0, 8), 1e-12))
+        << "force on particle 0 (p0 = x_i) must be the opposite (actio = reactio): want (0,0,8), got " << str(f.col(0));
+}
+
+TEST(Task2_2_SpringForces, InternalForcesSumToZero) {
+    MovingCloth cloth;
+    Matrix3X f = Matrix3X::Zero(3, cloth.x.cols());
+    addClothSpringForces(cloth.springs, cloth.x, cloth.v, f);
+    const Vec3 total = f.rowwise().sum();
+    EXPECT_LT(total.norm(), 1e-9 * f.norm()) << "the spring forces of a cloth are internal: they must sum to zero (momentum is conserved), got "
+                                             << str(total) << ". Does every spring act on BOTH its particles, +F on j and -F on i?";
+    EXPECT_GT(f.norm(), 1.0) << "a distorted, moving cloth must feel spring forces";
+    // Angular momentum: Σ x_i × f_i = 0 for central forces.
+    Vec3 torque = Vec3::Zero();
+    for (int i = 0; i < cloth.x.cols(); ++i) torque += Vec3(cloth.x.col(i)).cross(Vec3(f.col(i)));
+    EXPECT_LT(torque.norm(), 1e-9 * f.norm()) << "spring forces act along the springs: their torques must cancel, got " << str(torque);
+}
+
+TEST(Task2_2_SpringForces, AddsToExistingForces) {
+    MovingCloth cloth;
+    Matrix3X f0 = Matrix3X::Constant(3, cloth.x.cols(), 0.25), f = Matrix3X::Zero(3, cloth.x.cols());
+    addClothSpringForces(cloth.springs, cloth.x, cloth.v, f);
+    addClothSpringForces(cloth.springs, cloth.x, cloth.v, f0);
+    EXPECT_LT((f0 - f - Matrix3X::Constant(3, cloth.x.cols(), 0.25)).norm(), 1e-9 * f.norm())
+        << "the spring forces must be ADDED to f (f += ...), not overwrite it: other force terms are already in f";
+}
+
+TEST(Task2_2_SpringForces, IsMinusGradientOfSpringEnergy) {
+    MovingCloth cloth(/*kd=*/0.0);
+    const Matrix3X v = Matrix3X::Zero(3, cloth.x.cols());
+    Matrix3X f = Matrix3X::Zero(3, cloth.x.cols());
+    addClothSpringForces(cloth.springs, cloth.x, v, f);
+    const double h = 1e-6;
+    for (int i = 0; i < cloth.x.cols(); ++i)
+        for (int d = 0; d < 3; ++d) {
+            Matrix3X xp = cloth.x, xm = cloth.x;
+            xp(d, i) += h, xm(d, i) -= h;
+            const double grad = (springEnergy(cloth.springs, xp) - springEnergy(cloth.springs, xm)) / (2 * h);
+            EXPECT_NEAR(f(d, i), -grad, 1e-5 * std::max(1.0, std::abs(grad)))
+                << "particle " << i << ", component " << d << ": the spring force must be -dE/dx of E = sum 1/2 k (|x_j-x_i| - l0)^2 "
+                << "(finite differences give " << -grad << ")";
+        }
+}
+
+TEST(Task2_2_SpringForces, CoincidentParticlesGiveNoNaN) {
+    Matrix3X x = Matrix3X::Zero(3, 3), v = Matrix3X::Zero(3, 3), f = Matrix3X::Zero(3, 3);
+    x.col(2) = Vec3(0, -1, 0);
+    v.col(1) = Vec3(1, 0, 0);
+    addClothSpringForces({{0, 1, 100.0, 0.5, 1.0, SpringType::Structural}, {1, 2, 100.0, 0.5, 1.0, SpringType::Structural}}, x, v, f);
+    EXPECT_TRUE(f.allFinite()) << "particles 0 and 1 coincide: their spring has no direction; the force must be finite (zero), not NaN";
+    EXPECT_NEAR(f(1, 2), 50.0, 1e-9) << "the other spring (1-2, stretched by 0.5, k = 100) must still pull particle 2 up with 50 N";
+}
+
+TEST(Task2_2_HangingChain, StaticStretchMatchesAnalytic) {
+    // A vertical chain of n particles (column of a 1-wide cloth), the top one pinned, relaxed with
+    // damping. At rest link i (from particle i-1 to i) carries the weight of the n - i particles below it:
+    // k (l_i - l0) = (n - i) m g.
+    const int n = 8;
+    const double m = 0.05, k = 400.0, l0 = 0.1, g = 9.81;
+    Matrix3X x(3, n), v = Matrix3X::Zero(3, n);
+    VectorX w = VectorX::Constant(n, 1.0 / m);
+    w[0] = 0.0;
+    std::vector<Spring> springs;
+    for (int i = 0; i < n; ++i) x.col(i) = Vec3(0, -l0 * i, 0);
+    for (int i = 1; i < n; ++i) springs.push_back({i - 1, i, k, l0, 0.0, SpringType::Structural});
+    const ForceField field = [&](const Matrix3X& xs, const Matrix3X& vs, Matrix3X& f) {
+        f.setZero(3, xs.cols());
+        addClothSpringForces(springs, xs, vs, f);
+        for (int i = 1; i < n; ++i) f.col(i) += Vec3(0, -m * g, 0) - 0.3 * vs.col(i);  // gravity and damping, written here
+    };
+    for (int s = 0; s < 20000; ++s) symplecticEulerStep(x, v, w, field, 1e-3);
+    for (int i = 1; i < n; ++i) {
+        const double want = l0 + (n - i) * m * g / k;
+        EXPECT_NEAR((x.col(i) - x.col(i - 1)).norm(), want, 1e-6)
+            << "hanging chain, link " << i << ": at rest it carries the weight of the " << n - i << " particles below, so its length must be "
+            << "l0 + (n - i) m g / k = " << want << " m";
+    }
+}
+
+// ================================ Task 2.3: gravity and damping ===============================
+
+TEST(Task2_3_ExternalForces, GravitySumsToTotalMass) {
+    ClothSpec spec;
+    spec.nx = 6, spec.ny = 4, spec.mass = 0.3;
+    const State s = makeGridState(spec);  // m_i = 0.3 / 24 kg, nothing pinned
+    Matrix3X f = Matrix3X::Zero(3, s.size());
+    addClothExternalForces(s.w, s.v, Vec3(0, -9.81, 0), 0.0, f);
+    const Vec3 total = f.rowwise().sum();
+    EXPECT_TRUE(total.isApprox(Vec3(0, -0.3 * 9.81, 0), 1e-12))
+        << "a cloth of total mass m_gesamt = 0.3 kg: the gravity forces m_i g must sum to m_gesamt g = (0, -2.943, 0), got " << str(total)
+        << ". Remember m_i = 1 / w_i.";
+    EXPECT_NEAR(f(1, 5), -0.3 / 24 * 9.81, 1e-12) << "each particle has m_i = m_gesamt / (nx ny) = 0.0125 kg, so f_i = m_i g";
+}
+
+TEST(Task2_3_ExternalForces, PinnedParticlesGetNoForce) {
+    VectorX w(3);
+    w << 0.0, 2.0, 0.0;
+    Matrix3X v = Matrix3X::Ones(3, 3), f = Matrix3X::Zero(3, 3);
+    addClothExternalForces(w, v, Vec3(0, -10, 0), 0.5, f);
+    EXPECT_TRUE(f.allFinite()) << "pinned particles have w = 0: dividing by w gives Inf; skip them";
+    EXPECT_TRUE(f.col(0).isZero() && f.col(2).isZero()) << "pinned particles (w = 0) must get no gravity and no damping, got "
+                                                        << str(f.col(0)) << " and " << str(f.col(2));
+    EXPECT_TRUE(f.col(1).isApprox(Vec3(-0.5, -5.5, -0.5), 1e-12))
+        << "particle 1: m = 1/w = 0.5 kg, v = (1,1,1), c = 0.5: want m g - c v = (-0.5, -5.5, -0.5), got " << str(f.col(1));
+}
+
+TEST(Task2_3_ExternalForces, DampingOpposesVelocity) {
+    VectorX w = VectorX::Constant(2, 1.0);
+    Matrix3X v(3, 2), f = Matrix3X::Zero(3, 2);
+    v << 1, -4, 2, 0, 0, 3;
+    addClothExternalForces(w, v, Vec3::Zero(), 2.0, f);
+    EXPECT_TRUE(f.isApprox(-2.0 * v, 1e-12)) << "without gravity the force must be -c v (c = 2), got columns " << str(f.col(0)) << ", "
+                                             << str(f.col(1));
+}
+
+TEST(Task2_3_ExternalForces, AddsToExistingForces) {
+    VectorX w = VectorX::Constant(2, 0.5);
+    Matrix3X v = Matrix3X::Zero(3, 2), f = Matrix3X::Constant(3, 2, 1.0);
+    addClothExternalForces(w, v, Vec3(0, -1, 0), 0.0, f);
+    EXPECT_TRUE(f.col(0).isApprox(Vec3(1, -1, 1), 1e-12)) << "forces must be added to f (f += m g), not overwrite it: want (1, -1, 1), got "
+                                                          << str(f.col(0));
+}

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# ./lab release writes a student distribution that builds, runs and grades on its own:
+# no solutions/, no instructor tests, every graded test "not implemented", every scene stops
+# with "not implemented: exercise ..." instead of crashing.
+set -u
+root=$1
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$root/lab" release "$tmp/copy" || fail "lab release"
+[[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
+[[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
+
+cd "$tmp/copy" || fail "cd"
+export CLOTHLAB_BUILD="$tmp/copy/build"
+./lab grade --json "$tmp/grade.json" >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the copy"; }
+specs=()
+for exe in "$CLOTHLAB_BUILD"/grade/bin/grade_*_submission; do
+  nn=$(basename "$exe"); nn=${nn#grade_}; nn=${nn%%_*}
+  specs+=(--stage "$nn=$exe")
+done
+((${#specs[@]})) || fail "no graded test binaries in the copy"
+"$CLOTHLAB_BUILD/grade/bin/clothlab-grade" --points-dir tests --quiet --expect all-fail --message "not implemented: exercise" "${specs[@]}" \
+  || fail "the untouched copy must fail every graded test with 'not implemented'"
+grep -q '"max_points": [1-9]' "$tmp/grade.json" || fail "grade.json has no points"
+# The CLI of the same (grading) build: the copy's own stubs.
+cmake --build "$CLOTHLAB_BUILD/grade" -j "$(nproc)" --target clothlab >"$tmp/build.log" 2>&1 || { tail "$tmp/build.log"; fail "build the copy's CLI"; }
+for s in scenes/*.json; do
+  "$CLOTHLAB_BUILD/grade/bin/clothlab" run "$s" --steps 5 >"$tmp/run.log" 2>&1
+  code=$?
+  [[ $code -eq 2 ]] && grep -q "not implemented: exercise" "$tmp/run.log" || fail "$s in the copy: exit $code, $(tail -2 "$tmp/run.log")"
+done
+echo "release copy builds, grades (0 points) and runs every scene up to 'not implemented'"

@@ -1,0 +1,105 @@
+// Stability and precision studies against theory (framework + reference stages, not graded).
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "clothlab/io/scene_json.h"
+#include "clothlab/study/precision.h"
+#include "clothlab/study/stability.h"
+#include "clothlab/study/theory.h"
+
+using namespace clothlab;
+
+namespace {
+Scene scene(const std::string& name, const std::vector<std::string>& sets = {}) {
+    return loadScene(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/" + name, sets);
+}
+// A chain hanging straight down: all motion along one line, so the linear analysis is exact.
+Scene hangingChain() { return scene("chain.json", {"chain.direction=[0,-1,0]", "chain.kd=0"}); }
+}  // namespace
+
+TEST(Theory, CriticalValuesRightSideUp) {
+    EXPECT_DOUBLE_EQ(theoreticalCriticalDt("symplectic_euler", 10.0), 0.2);
+    EXPECT_DOUBLE_EQ(theoreticalCriticalDt("velocity_verlet", 10.0), 0.2);
+    EXPECT_NEAR(theoreticalCriticalDt("rk4", 10.0), 0.2828427, 1e-6);
+    EXPECT_TRUE(std::isinf(theoreticalCriticalDt("implicit_euler", 10.0)));
+    EXPECT_EQ(theoreticalCriticalDt("explicit_euler", 10.0), 0.0);
+    // k_crit = m pi^2 / dt^2: a SMALLER step allows a STIFFER spring (the slides have it upside down).
+    EXPECT_NEAR(provotCriticalStiffness(1.0, 0.1), M_PI * M_PI / 0.01, 1e-9);
+    EXPECT_GT(provotCriticalStiffness(1.0, 0.01), provotCriticalStiffness(1.0, 0.1));
+}
+
+TEST(Theory, OmegaMaxOfSingleSpringAndChain) {
+    EXPECT_NEAR(maxAngularFrequency(scene("spring.json")), 10.0, 1e-9) << "sqrt(k/m) = sqrt(100/1)";
+    // Fixed-free chain of N free masses: omega_j^2 = 4 k/m sin^2((2j-1) pi / (2 (2N+1))), largest at j = N.
+    const Scene c = hangingChain();
+    const int n = c.chain.particles - 1;
+    const double expected = 2.0 * std::sqrt(c.chain.k / c.chain.mass) * std::sin((2.0 * n - 1.0) * M_PI / (2.0 * (2.0 * n + 1.0)));
+    EXPECT_NEAR(maxAngularFrequency(c), expected, 1e-9 * expected);
+    // The cloth: omega_max scales with sqrt(k) when every spring group is scaled.
+    const Scene cloth = scene("mfn_hanging.json", {"cloth.nx=6", "cloth.ny=5"});
+    EXPECT_NEAR(maxAngularFrequency(withStiffness(cloth, 4 * sceneStiffness(cloth))), 2 * maxAngularFrequency(cloth), 1e-6 * maxAngularFrequency(cloth));
+    const Scene stiff = withStiffness(cloth, 500.0);
+    EXPECT_DOUBLE_EQ(stiff.springs.structural.k, 500.0);
+    EXPECT_DOUBLE_EQ(stiff.springs.shear.k, 200.0) << "the ratio shear / structural stays";
+}
+
+TEST(Stability, SymplecticEulerCriticalStepOfSingleSpring) {
+    // Released 1 cm from equilibrium (xi_eq = 1.0981 m): near omega dt = 2 the numerical amplitude grows
+    // like 1/sqrt(1 - (omega dt / 2)^2); from 40 cm it would swing through the anchor, where the
+    // spring is not linear any more, and go unstable earlier (at omega dt = 1.87).
+    StabilityCriteria crit;
+    const Scene s = scene("spring.json", {"spring.start=[0,-1.108,0]"});
+    const double omega = maxAngularFrequency(s);
+    const double measured = measureCriticalDt(s, "symplectic_euler", 0.05, 0.5, crit);
+    std::printf("single spring: measured critical omega dt = %.4f (theory 2)\n", measured * omega);
+    EXPECT_NEAR(measured * omega, 2.0, 0.2) << "measured critical dt " << measured << " s vs theory 2/omega = " << 2.0 / omega << " s";
+}
+
+TEST(Stability, SymplecticEulerCriticalStepOfChain) {
+    StabilityCriteria crit;
+    const Scene c = hangingChain();
+    const double omega = maxAngularFrequency(c);
+    const double measured = measureCriticalDt(c, "symplectic_euler", 0.2 / omega, 20.0 / omega, crit);
+    std::printf("chain: omega_max = %.2f rad/s, measured critical omega_max dt = %.4f (theory 2)\n", omega, measured * omega);
+    EXPECT_NEAR(measured * omega, 2.0, 0.2) << "measured critical dt " << measured << " s vs theory 2/omega_max = " << 2.0 / omega << " s";
+}
+
+TEST(Stability, SmallSweepAgreesWithTheory) {
+    StabilityOptions o;
+    o.methods = {"symplectic_euler", "implicit_euler"};
+    o.k_min = 10, o.k_max = 1e5, o.k_count = 5, o.dt_min = 1e-4, o.dt_max = 1e-1, o.dt_count = 5;
+    o.criteria.steps = 300;
+    const StabilityResult r = stabilitySweep(scene("spring.json"), o);
+    ASSERT_EQ(r.points.size(), 50u);
+    int agree = 0;
+    for (const StabilityPoint& p : r.points) {
+        const bool theory = p.dt < theoreticalCriticalDt(p.method, p.omega_max);
+        if (p.method == "implicit_euler") EXPECT_TRUE(p.verdict.stable) << "implicit Euler, k = " << p.k << ", dt = " << p.dt;
+        agree += theory == p.verdict.stable;
+    }
+    EXPECT_GE(agree, 48) << "measured stability must match omega dt < 2 (symplectic Euler) and 'always' (implicit Euler)";
+}
+
+TEST(Precision, ConvergenceOrdersOnSingleSpring) {
+    PrecisionOptions o;
+    o.methods = {"explicit_euler", "symplectic_euler", "velocity_verlet", "rk4"};
+    o.dt_min = 1e-3, o.dt_max = 1e-2, o.dt_count = 4, o.end_time = 1.0;
+    const PrecisionResult r = precisionStudy(scene("spring.json"), o);
+    EXPECT_EQ(r.reference, "analytic");
+    EXPECT_NEAR(r.slopes.at("explicit_euler"), 1.0, 0.15);
+    EXPECT_NEAR(r.slopes.at("symplectic_euler"), 1.0, 0.15);
+    EXPECT_NEAR(r.slopes.at("velocity_verlet"), 2.0, 0.15);
+    EXPECT_NEAR(r.slopes.at("rk4"), 4.0, 0.15);
+    for (const PrecisionRun& p : r.runs) EXPECT_NEAR(p.dt * p.steps, 1.0, 1e-12) << "dt divides the end time";
+}
+
+TEST(Precision, ReferenceRunWithoutAnalyticSolution) {
+    PrecisionOptions o;
+    o.methods = {"velocity_verlet"};
+    o.dt_min = 2.5e-4, o.dt_max = 1e-3, o.dt_count = 3, o.end_time = 0.2;
+    const PrecisionResult r = precisionStudy(hangingChain(), o);
+    EXPECT_NE(r.reference.find("rk4 at dt"), std::string::npos);
+    EXPECT_NEAR(r.slopes.at("velocity_verlet"), 2.0, 0.2);
+}
