@@ -116,7 +116,7 @@ App::App(const AppOptions& options) : options_(options) {
 
 bool App::load(const std::string& path) {
     try {
-        original_ = loadScene(path);
+        original_ = loadScene(path, path == options_.scene ? options_.sets : std::vector<std::string>{});
     } catch (const InputError& e) {
         message_ = std::string("error: ") + e.what();
         return false;
@@ -409,6 +409,13 @@ void App::panelParameters() {
                 changed |= sliderD((std::string(name) + " k").c_str(), g->k, 1, 1e5, "%.0f", true);
                 ImGui::PopID();
             }
+        if (!position_based) {
+            changed |= ImGui::Checkbox("Provot", &scene_.provot.enabled);
+            ImGui::SameLine();
+            double pct = scene_.provot.max_strain * 100;
+            changed |= sliderD("tau [%]", pct, 0.1, 50, "%.1f", true);
+            scene_.provot.max_strain = pct / 100;
+        }
         struct C { const char* name; ConstraintGroup* g; } cons[] = {{"distance", &scene_.constraints.distance},
                                                                  {"bending c.", &scene_.constraints.bending}};
         if (position_based)

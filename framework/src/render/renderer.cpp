@@ -410,7 +410,7 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
         setMaterial(GL_FRONT_AND_BACK, {0.85f, 0.12f, 0.10f}, 0.5f, 50);
         int drawn = 0;
         for (int i = 0; i < n && drawn < 2000; ++i)
-            if (d.w[i] == 0) drawSphere(d.x.col(i), 0.014 * scale, 12, 6), ++drawn;
+            if (d.w[i] == 0) drawSphere(d.x.col(i), 0.02 * scale, 16, 8), ++drawn;
         glDisable(GL_LIGHTING);
     }
     glDisable(GL_BLEND);

@@ -32,6 +32,7 @@ std::vector<StageInfo> parseStageCode(const std::string& spec);
 struct AppOptions {
     std::string scene;        ///< scene file to open ("" = the first one in scenes_dir)
     std::string scenes_dir;   ///< folder the scene picker lists (*.json)
+    std::vector<std::string> sets;  ///< "key=value" overrides applied to `scene` (as `--set` of `./lab run`)
     bool play = true;         ///< start running
     int edges = -1;           ///< spring/constraint overlay: -1 by scene (on for springs and chains), 0 off, 1 on
     bool strain = false;      ///< colour the overlay by strain instead of by type
