@@ -307,7 +307,9 @@ void App::frame(int width, int height) {
         drawBounds(d, lo, hi);
         // Leave room for the motion: a hanging cloth or chain swings below its pins.
         const double reach = (hi - lo).maxCoeff();
-        if (scene_.model != "spring") lo.y() -= 0.5 * reach;
+        bool pinned = false;
+        for (int i = 0; i < d.w.size(); ++i) pinned = pinned || d.w[i] == 0;
+        if (scene_.model != "spring" && pinned) lo.y() -= 0.5 * reach;
         const double panel = 360.0;
         cam_ = sceneCamera(scene_, lo, hi, double(width - panel) / height);
         // Shift the view so the scene sits in the part of the window right of the panel.
@@ -332,6 +334,7 @@ void App::panel(int /*width*/, int height) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(340, height * scale - 16), ImGuiCond_Always);
     ImGui::Begin("clothlab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(190);
     if (!message_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kRed);
         ImGui::TextWrapped("%s", message_.c_str());
@@ -348,6 +351,7 @@ void App::panel(int /*width*/, int height) {
     ImGui::Separator();
     ImGui::TextDisabled("left drag: particle / orbit   wheel: zoom");
     ImGui::TextDisabled("right click or P: pin/unpin   space: play");
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
@@ -406,23 +410,26 @@ void App::panelParameters() {
                 ImGui::PushID(name);
                 changed |= ImGui::Checkbox("##on", &g->enabled);
                 ImGui::SameLine();
+                ImGui::SetNextItemWidth(155);
                 changed |= sliderD((std::string(name) + " k").c_str(), g->k, 1, 1e5, "%.0f", true);
                 ImGui::PopID();
             }
         if (!position_based) {
             changed |= ImGui::Checkbox("Provot", &scene_.provot.enabled);
             ImGui::SameLine();
+            ImGui::SetNextItemWidth(110);
             double pct = scene_.provot.max_strain * 100;
             changed |= sliderD("tau [%]", pct, 0.1, 50, "%.1f", true);
             scene_.provot.max_strain = pct / 100;
         }
         struct C { const char* name; ConstraintGroup* g; } cons[] = {{"distance", &scene_.constraints.distance},
-                                                                 {"bending c.", &scene_.constraints.bending}};
+                                                                 {"bending", &scene_.constraints.bending}};
         if (position_based)
             for (auto& [name, g] : cons) {
                 ImGui::PushID(name);
                 changed |= ImGui::Checkbox("##on", &g->enabled);
                 ImGui::SameLine();
+                ImGui::SetNextItemWidth(155);
                 if (sv.method == "xpbd") changed |= sliderD((std::string(name) + " alpha").c_str(), g->compliance, 0, 1e-2, "%.2e");
                 else changed |= sliderD((std::string(name) + " k").c_str(), g->stiffness, 0, 1, "%.3f");
                 ImGui::PopID();

@@ -177,7 +177,17 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
             for (const auto& t : d.triangles)
                 for (int k = 0; k < 3; ++k) glVertex3d(d.x(0, t[k]), sy, d.x(2, t[k]));
             glEnd();
-        } else {
+        }
+        for (const Collider& c : d.colliders) {
+            if (c.type != Collider::Type::Sphere || !opt.colliders) continue;
+            glBegin(GL_TRIANGLE_FAN);
+            glVertex3d(c.point.x(), sy, c.point.z());
+            for (int k = 0; k <= 48; ++k)
+                glVertex3d(c.point.x() + 0.9 * c.radius * std::cos(2 * kPi * k / 48), sy,
+                           c.point.z() + 0.9 * c.radius * std::sin(2 * kPi * k / 48));
+            glEnd();
+        }
+        if (d.triangles.empty()) {
             for (int i = 0; i < d.x.cols(); ++i) {
                 glBegin(GL_TRIANGLE_FAN);
                 glVertex3d(d.x(0, i), sy, d.x(2, i));
