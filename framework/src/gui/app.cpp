@@ -325,6 +325,17 @@ void App::frame(int width, int height) {
     handleMouse(width, height);
     d = currentDrawData();
     renderer_.draw(d, cam_, view_, width, height);
+    if (save_view_) {
+        // The 3-D view without the panel, as drawn just now.
+        save_view_ = false;
+        const std::string name = "clothlab_view_" + std::to_string(++saved_) + ".png";
+        try {
+            writePng(name, readPixels(width, height));
+            status_ = "saved " + (std::filesystem::current_path() / name).string();
+        } catch (const std::exception& e) {
+            message_ = std::string("error: ") + e.what();
+        }
+    }
     panel(width, height);
     drawOverlay(d, view_, 360.0f);
 }
@@ -378,7 +389,10 @@ void App::panelScene() {
     ImGui::SameLine();
     if (ImGui::Button("Reset")) rebuild(false);
     ImGui::SameLine();
+    if (ImGui::Button("Save PNG")) save_view_ = true;
+    ImGui::SameLine();
     ImGui::Text("t = %.3f s", sim_ ? sim_->state().t : 0.0);
+    if (!status_.empty()) ImGui::TextDisabled("%s", status_.c_str());
     float sp = static_cast<float>(speed_);
     if (ImGui::SliderFloat("speed", &sp, 0.01f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) speed_ = sp;
     if (sim_) ImGui::Text("%d particles, %zu edges, step %.3f ms", sim_->state().size(), sim_->edges().size(), last_step_ms_);

@@ -115,6 +115,9 @@ private:
     double last_step_ms_ = 0.0;          ///< wall time of the last step, ms
     std::vector<StageInfo> stages_;      ///< stages of this build
     double wave_t_ = 0.0;                ///< time of the benchmark wave, s
+    bool save_view_ = false;             ///< "Save PNG" pressed: write the 3-D view on the next frame
+    int saved_ = 0;                      ///< pictures saved so far
+    std::string status_;                 ///< last non-error note (e.g. "saved clothlab_view_1.png")
 };
 
 }  // namespace clothlab
