@@ -1,6 +1,8 @@
 // Graded tests of stage 02 — cloth as a mass-spring network (Masse-Feder-Netzwerk).
 // Test names start with the task they check (Task2_1 = exercise 2.1). Points: 02_mfn.points.json.
-// Each task is graded on its own: force tests build their springs here, not with your makeClothSprings.
+// Each task is graded on its own: force tests build their springs here, not with your makeClothSprings,
+// and integrate with code written here. Task 2.2 calls your stage-01 hookeForce and springDampingForce:
+// if stage 01 is unfinished, grade with ./lab grade --stage 02 --reference 01.
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -278,12 +280,14 @@ TEST(Task2_2_HangingChain, StaticStretchMatchesAnalytic) {
     std::vector<Spring> springs;
     for (int i = 0; i < n; ++i) x.col(i) = Vec3(0, -l0 * i, 0);
     for (int i = 1; i < n; ++i) springs.push_back({i - 1, i, k, l0, 0.0, SpringType::Structural});
-    const ForceField field = [&](const Matrix3X& xs, const Matrix3X& vs, Matrix3X& f) {
-        f.setZero(3, xs.cols());
-        addClothSpringForces(springs, xs, vs, f);
-        for (int i = 1; i < n; ++i) f.col(i) += Vec3(0, -m * g, 0) - 0.3 * vs.col(i);  // gravity and damping, written here
-    };
-    for (int s = 0; s < 20000; ++s) symplecticEulerStep(x, v, w, field, 1e-3);
+    Matrix3X f(3, n);
+    for (int s = 0; s < 20000; ++s) {  // symplectic Euler, written here (graded in stage 01)
+        f.setZero();
+        addClothSpringForces(springs, x, v, f);
+        for (int i = 1; i < n; ++i) f.col(i) += Vec3(0, -m * g, 0) - 0.3 * v.col(i);  // gravity and damping, written here
+        v += 1e-3 * (f * w.asDiagonal());
+        x += 1e-3 * v;
+    }
     for (int i = 1; i < n; ++i) {
         const double want = l0 + (n - i) * m * g / k;
         EXPECT_NEAR((x.col(i) - x.col(i - 1)).norm(), want, 1e-6)

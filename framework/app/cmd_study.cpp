@@ -1,6 +1,8 @@
 // `clothlab study stability|precision SCENE`: sweeps with CSV, PNG plots and a printed table.
 #include <unistd.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -70,7 +72,7 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
     struct StabilityCli {
         std::string scene, out, methods;
         std::vector<std::string> sets;
-        double k_min = 0, k_max = 0, dt_min = 0, dt_max = 0, factor = 10;
+        double k_min = NAN, k_max = NAN, dt_min = NAN, dt_max = NAN, factor = 100;
         int k_count = 13, dt_count = 13;
         long long steps = 1000;
     };
@@ -93,10 +95,10 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         StabilityOptions o;
         if (!so->methods.empty()) o.methods = splitMethods(so->methods);
         const double k = sceneStiffness(scene);
-        o.k_min = so->k_min > 0 ? so->k_min : k / 100;
-        o.k_max = so->k_max > 0 ? so->k_max : k * 1e4;
-        o.dt_min = so->dt_min > 0 ? so->dt_min : scene.solver.dt / 100;
-        o.dt_max = so->dt_max > 0 ? so->dt_max : scene.solver.dt * 100;
+        o.k_min = !std::isnan(so->k_min) ? so->k_min : k / 100;
+        o.k_max = !std::isnan(so->k_max) ? so->k_max : k * 1e4;
+        o.dt_min = !std::isnan(so->dt_min) ? so->dt_min : scene.solver.dt / 100;
+        o.dt_max = !std::isnan(so->dt_max) ? so->dt_max : scene.solver.dt * 100;
         o.k_count = so->k_count, o.dt_count = so->dt_count;
         checkRange("--k-min/--k-max/--k-count", o.k_min, o.k_max, o.k_count);
         checkRange("--dt-min/--dt-max/--dt-count", o.dt_min, o.dt_max, o.dt_count);
@@ -110,6 +112,14 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
                   << " steps per run\n";
         const StabilityResult r = stabilitySweep(scene, o);
         printStabilityTable(std::cout, r);
+        // The measured critical step at the scene's own k, against theory (bisection).
+        for (const std::string& m : o.methods) {
+            const double theory = theoreticalCriticalDt(m, r.omega_ref);
+            if (!(theory > 0.0) || !std::isfinite(theory)) continue;
+            const double measured = measureCriticalDt(scene, m, theory / 10, theory * 10, o.criteria);
+            std::printf("%-18s critical dt at k = %g N/m: measured %.4g s, theory %.4g s (ratio %.3f)\n", m.c_str(), r.k_ref,
+                        measured, theory, measured / theory);
+        }
         writeStabilityCsv(out + "/stability.csv", r);
         std::cout << "wrote " << out << "/stability.csv\n";
         for (const std::string& png : plotStability(std::filesystem::absolute(out).string(), r)) std::cout << "wrote " << png << "\n";
@@ -119,7 +129,7 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
     struct PrecisionCli {
         std::string scene, out, methods, reference_method = "rk4";
         std::vector<std::string> sets;
-        double dt_min = 0, dt_max = 0, end_time = 1.0, reference_dt = 0;
+        double dt_min = NAN, dt_max = NAN, end_time = 1.0, reference_dt = 0;
         int dt_count = 7;
     };
     auto po = std::make_shared<PrecisionCli>();
@@ -138,8 +148,8 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         const Scene scene = loadScene(po->scene, po->sets);
         PrecisionOptions o;
         if (!po->methods.empty()) o.methods = splitMethods(po->methods);
-        o.dt_min = po->dt_min > 0 ? po->dt_min : scene.solver.dt / 10;
-        o.dt_max = po->dt_max > 0 ? po->dt_max : scene.solver.dt * 10;
+        o.dt_min = !std::isnan(po->dt_min) ? po->dt_min : scene.solver.dt / 10;
+        o.dt_max = !std::isnan(po->dt_max) ? po->dt_max : scene.solver.dt * 10;
         o.dt_count = po->dt_count;
         checkRange("--dt-min/--dt-max/--dt-count", o.dt_min, o.dt_max, o.dt_count);
         if (o.dt_max > po->end_time) throw InputError("command line", "--dt-max", "must not exceed --end-time");

@@ -53,6 +53,22 @@ if [[ $? -eq 1 ]] && grep -q "^error: $tmp/nope.json: (file): cannot open" "$tmp
 code=$?
 if [[ $code -eq 3 ]] && grep -q "unstable at step" "$tmp/err"; then ok; else bad "blow-up: exit $code, $(cat "$tmp/err")"; fi
 
+# A stiff cloth with explicit Euler blows up the same way; implicit Euler runs it.
+"$exe" run "$root/scenes/mfn_implicit.json" --set solver.method=explicit_euler --steps 100 --quiet >"$tmp/out" 2>"$tmp/err"
+code=$?
+if [[ $code -eq 3 ]] && grep -q "unstable at step" "$tmp/err"; then ok; else bad "cloth blow-up: exit $code, $(cat "$tmp/err")"; fi
+
+# The studies write CSV (and PNG when gnuplot is there) and print their table.
+if "$exe" study stability "$root/scenes/spring.json" --methods symplectic_euler,implicit_euler --k-count 3 --dt-count 3 --steps 100 \
+     --out "$tmp/st" >"$tmp/out" 2>&1 && grep -q "agrees in" "$tmp/out" && [[ -s $tmp/st/stability.csv ]]; then ok; else bad "study stability: $(tail -3 "$tmp/out")"; fi
+if "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/pr" >"$tmp/out" 2>&1 \
+     && grep -q "measured order" "$tmp/out" && [[ $(wc -l <"$tmp/pr/precision.csv") -eq 3 ]]; then ok; else bad "study precision: $(tail -3 "$tmp/out")"; fi
+# Without gnuplot on the PATH: a clear note, the CSV all the same, exit 0.
+if env PATH=/nonexistent "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/np" >"$tmp/out" 2>"$tmp/err" \
+     && grep -q "gnuplot not found" "$tmp/err" && [[ -s $tmp/np/precision.csv && ! -e $tmp/np/precision.png ]]; then ok; else bad "study without gnuplot: $(cat "$tmp/err")"; fi
+"$exe" study precision "$root/scenes/spring.json" --dt-min -1 >"$tmp/out" 2>"$tmp/err"
+if [[ $? -eq 1 ]] && grep -q "^error: command line: --dt-min" "$tmp/err"; then ok; else bad "study bad range: $(cat "$tmp/err")"; fi
+
 # --dump writes the documented header and one row per particle.
 "$exe" run "$root/scenes/chain.json" --steps 10 --quiet --dump "$tmp/state.csv" >/dev/null 2>&1
 if [[ "$(head -1 "$tmp/state.csv")" == "i,x,y,z,vx,vy,vz" && $(wc -l <"$tmp/state.csv") -eq 11 ]]; then ok; else bad "dump: $(head -3 "$tmp/state.csv")"; fi

@@ -175,3 +175,27 @@ TEST(ImplicitEuler, PinnedParticlesStayPut) {
     EXPECT_TRUE(sim->state().x.col(19).isApprox(pin, 0.0));
     EXPECT_LT(sim->state().x(1, 399), -0.9) << "the free corner hangs down";
 }
+
+TEST(ImplicitEuler, ConservesMomentumWithCholeskyAndWithCG) {
+    // No pins, no gravity, no air damping: the forces are internal, so sum m_i v_i must not change.
+    // 8 x 8 (186 unknowns) is solved by sparse Cholesky, 24 x 24 (1728 unknowns) by conjugate gradients.
+    for (int n : {8, 24}) {
+        auto sim = makeSimulation(scene("mfn_implicit.json", {"cloth.nx=" + std::to_string(n), "cloth.ny=" + std::to_string(n), "cloth.pins=[]",
+                                                             "forces.gravity=[0,0,0]", "forces.damping=0", "solver.dt=0.01"}));
+        State& s = sim->state();
+        for (int i = 0; i < s.size(); ++i) {
+            s.x.col(i) += 0.01 * Vec3(std::sin(1.3 * i), std::cos(0.7 * i), std::sin(2.1 * i));
+            s.v.col(i) = Vec3(std::cos(0.9 * i), 0.3 * std::sin(1.7 * i), 1.0);
+        }
+        auto momentum = [&] {
+            Vec3 p = Vec3::Zero();
+            for (int i = 0; i < s.size(); ++i) p += s.v.col(i) / s.w[i];
+            return p;
+        };
+        const Vec3 p0 = momentum();
+        for (int step = 0; step < 10; ++step) sim->step();
+        EXPECT_TRUE(s.isFinite());
+        EXPECT_LT((momentum() - p0).norm(), 1e-6 * p0.norm()) << n << " x " << n << ": momentum " << momentum().transpose() << " vs " << p0.transpose();
+        EXPECT_LT(metric(*sim, "max_strain"), 5.0) << "the stiff springs pulled the disturbed cloth together";
+    }
+}

@@ -76,7 +76,9 @@ TEST(Stability, SmallSweepAgreesWithTheory) {
     int agree = 0;
     for (const StabilityPoint& p : r.points) {
         const bool theory = p.dt < theoreticalCriticalDt(p.method, p.omega_max);
-        if (p.method == "implicit_euler") EXPECT_TRUE(p.verdict.stable) << "implicit Euler, k = " << p.k << ", dt = " << p.dt;
+        if (p.method == "implicit_euler") {
+            EXPECT_TRUE(p.verdict.stable) << "implicit Euler, k = " << p.k << ", dt = " << p.dt;
+        }
         agree += theory == p.verdict.stable;
     }
     EXPECT_GE(agree, 48) << "measured stability must match omega dt < 2 (symplectic Euler) and 'always' (implicit Euler)";

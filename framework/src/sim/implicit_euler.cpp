@@ -77,14 +77,23 @@ void ImplicitEulerSolver::buildPattern(const VectorX& w, const std::vector<Sprin
             }
     }
     pattern_springs_ = springs.size();
-    ldlt_.analyzePattern(A_);
+    use_cg_ = unknowns > 1500;
+    dv_ = VectorX::Zero(unknowns);
+    if (use_cg_) cg_.setTolerance(1e-10);
+    else ldlt_.analyzePattern(A_);
 }
 
 bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force,
                                const std::vector<Spring>& springs, double c, double dt) {
     const int n = static_cast<int>(x.cols());
-    if (static_cast<int>(index_.size()) != n || pattern_springs_ != springs.size()) buildPattern(w, springs);
+    bool same_pins = static_cast<int>(index_.size()) == n && pattern_springs_ == springs.size();
+    for (int i = 0; same_pins && i < n; ++i) same_pins = (w[i] > 0.0) == (index_[static_cast<size_t>(i)] >= 0);
+    if (!same_pins) buildPattern(w, springs);  // first step, or particles were pinned or released
     const int unknowns = static_cast<int>(A_.rows());
+    if (unknowns == 0) {  // everything pinned
+        x += dt * v;
+        return true;
+    }
 
     // (1) forces at the current state: b = dt f
     f_.setZero(3, n);
@@ -118,11 +127,20 @@ bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const
         if (a >= 0) b_.segment<3>(a) -= Kv;
     }
 
-    // (3) solve A Δv = b (sparse Cholesky, pattern analysed once)
-    ldlt_.factorize(A_);
-    if (ldlt_.info() != Eigen::Success) return false;
-    const VectorX dv = ldlt_.solve(b_);
-    if (ldlt_.info() != Eigen::Success || !dv.allFinite()) return false;
+    // (3) solve A Δv = b: sparse Cholesky (pattern analysed once) or, for large systems, CG
+    if (use_cg_) {
+        cg_.compute(A_);
+        dv_ = cg_.solveWithGuess(b_, dv_);
+        // Not converged within 2n iterations (extremely stiff): the finite iterate is used; should the
+        // motion then grow, runSimulation() reports it as unstable.
+        if ((cg_.info() != Eigen::Success && cg_.info() != Eigen::NoConvergence) || !dv_.allFinite()) return false;
+    } else {
+        ldlt_.factorize(A_);
+        if (ldlt_.info() != Eigen::Success) return false;
+        dv_ = ldlt_.solve(b_);
+        if (ldlt_.info() != Eigen::Success || !dv_.allFinite()) return false;
+    }
+    const VectorX& dv = dv_;
 
     // (4) v += Δv, x += dt v (pinned particles keep their velocity)
     for (int i = 0; i < n; ++i)

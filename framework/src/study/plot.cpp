@@ -18,8 +18,11 @@ bool runGnuplot(const std::string& script_path, const std::string& script) {
         out << script;
     }
     if (!gnuplotAvailable()) {
-        std::cerr << "note: gnuplot not found, so no PNG was drawn (install it: apt-get install gnuplot-nox, "
-                     "or ./lab setup); the CSV and the script " << script_path << " are written\n";
+        static bool told = false;  // one note per run, not one per plot
+        if (!told)
+            std::cerr << "note: gnuplot not found, so no PNG was drawn (install it: apt-get install gnuplot-nox, "
+                         "or ./lab setup); the CSV and the gnuplot scripts (*.gp, e.g. " << script_path << ") are written\n";
+        told = true;
         return false;
     }
     const std::string log = script_path + ".log";

@@ -152,17 +152,13 @@ std::vector<std::string> plotPrecision(const std::string& dir, const PrecisionRe
             if (p.method == m && !p.unstable && p.error > 0.0) d << p.dt << " " << p.error << " " << p.wall << "\n";
     }
     std::vector<std::string> written;
-    if (!gnuplotAvailable()) {
-        runGnuplot(dir + "/precision.gp", "");  // prints the note
-        return written;
-    }
     auto script = [&](const std::string& png, const std::string& xlabel, const std::string& column, bool with_slope) {
         std::ostringstream s;
         s << "cd '" << dir << "'\nset terminal pngcairo size 720,520 font ',10'\nset output '" << png << "'\n"
           << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid\n"
           << "set xlabel '" << xlabel << "'\nset ylabel 'error at T = " << r.end_time << " s [m]'\n"
           << "set key outside right font ',9'\n"
-          << "set title '" << (with_slope ? "convergence" : "work-precision") << ": " << r.scene << " (reference: " << r.reference << ")'\n"
+          << "set title '" << (with_slope ? "convergence" : "work-precision") << ": " << r.scene << " (reference: " << r.reference << ")' noenhanced\n"
           << "plot ";
         for (size_t i = 0; i < methods.size(); ++i) {
             const double slope = r.slopes.count(methods[i]) ? r.slopes.at(methods[i]) : NAN;

@@ -205,7 +205,7 @@ std::vector<std::string> plotStability(const std::string& dir, const StabilityRe
         const std::string file = "stability_" + m + ".dat";
         std::string title = m;
         for (auto& ch : title) if (ch == '_') ch = ' ';
-        s << "set title '" << title << "'\n"
+        s << "set title '" << title << "' noenhanced\n"
           << "plot '" << file << "' using 1:($3 > 0 ? $2 : 1/0) with points pt 7 ps 0.8 lc rgb '#2a9d3a' title 'stable', \\\n"
           << "     '" << file << "' using 1:($3 > 0 ? 1/0 : $2) with points pt 5 ps 0.7 lc rgb '#d62728' title 'unstable', \\\n"
           << "     2 / w(x) with lines lw 2 lc rgb 'black' title '{/Symbol w}_{max}{/Symbol D}t = 2', \\\n"
@@ -214,10 +214,6 @@ std::vector<std::string> plotStability(const std::string& dir, const StabilityRe
         return s.str();
     };
     std::vector<std::string> written;
-    if (!gnuplotAvailable()) {
-        runGnuplot(dir + "/stability.gp", "");  // prints the note
-        return written;
-    }
     for (const std::string& m : methods) {
         std::ostringstream s;
         s << "set terminal pngcairo size 640,480 font ',10'\nset output 'stability_" << m << ".png'\n" << common.str() << panel(m);
@@ -227,7 +223,7 @@ std::vector<std::string> plotStability(const std::string& dir, const StabilityRe
     const int n = static_cast<int>(methods.size()), cols = std::min(n, 3), rows = (n + cols - 1) / cols;
     all << "cd '" << dir << "'\nset terminal pngcairo size " << 400 * cols << "," << 380 * rows + 30 << " font ',9'\n"
         << "set output 'stability.png'\n" << common.str() << "set multiplot layout " << rows << "," << cols
-        << " title '" << r.model << ": stability maps (" << r.scene << ")'\n";
+        << " title '" << r.model << ": stability maps (" << r.scene << ")' noenhanced\n";
     for (const std::string& m : methods) all << panel(m);
     all << "unset multiplot\n";
     if (runGnuplot(dir + "/stability.gp", all.str())) written.push_back(dir + "/stability.png");

@@ -15,6 +15,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <Eigen/IterativeLinearSolvers>
 
 #include "clothlab/core/spring.h"
 #include "clothlab/exercise/01_hooke.h"
@@ -57,8 +58,12 @@ public:
     /// One step (formula in the file comment). Pinned particles (w = 0) keep their velocity and are
     /// left out of the system. The forces f(x, v) come from `force` (all force passes of the scene);
     /// the Jacobian from the springs and the global damping c (\f$ \partial f_i/\partial v_i \mathrel{+}= -c I \f$).
-    /// The system matrix is symmetric positive definite and solved by a sparse Cholesky factorisation
-    /// (Eigen::SimplicialLDLT).
+    /// The system matrix is symmetric positive definite. Up to 1500 unknowns (500 free particles) it is
+    /// solved by a sparse Cholesky factorisation (Eigen::SimplicialLDLT: exact, robust for extreme
+    /// stiffness and mass ratios); above, where the factor fills in and costs seconds per step, by
+    /// conjugate gradients with a diagonal (Jacobi) preconditioner, relative residual 10⁻¹⁰, started
+    /// from the previous step's Δv (if it does not converge within 2·unknowns iterations, the finite
+    /// iterate is used). The sparsity pattern is rebuilt when particles are pinned or released.
     /// @param x, v     positions (m) and velocities (m/s), 3 x N (updated in place)
     /// @param w        inverse masses, N, 1/kg
     /// @param force    the force field F(x, v), N
@@ -81,7 +86,11 @@ private:
     std::vector<std::array<int, 36>> blocks_;  ///< per spring: offsets of its (a,a), (b,b), (a,b), (b,a) blocks, −1 if absent
     size_t pattern_springs_ = 0;               ///< number of springs the pattern was built for
     SparseMatrix A_;                           ///< the system matrix
-    Eigen::SimplicialLDLT<SparseMatrix> ldlt_; ///< its factorisation
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt_; ///< its factorisation (small systems)
+    /// Conjugate gradients for large systems.
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg_;
+    bool use_cg_ = false;                      ///< more than 1500 unknowns
+    VectorX dv_;                               ///< Δv of the last step (CG's initial guess)
     Matrix3X f_;                               ///< forces at the start of the step
     VectorX b_;                                ///< right-hand side
 };

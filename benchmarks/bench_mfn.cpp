@@ -1,0 +1,61 @@
+// Stage 02 kernels on square cloths of 32², 64² and 128² particles: the spring-force accumulation
+// (addClothSpringForces) and one full step of each integrator. Counters: time per spring and per particle.
+#include <benchmark/benchmark.h>
+
+#include "clothlab/exercise/02_mfn.h"
+#include "clothlab/io/scene_json.h"
+#include "clothlab/sim/mass_spring.h"
+
+using namespace clothlab;
+
+namespace {
+// A cloth hanging from its top edge with structural, shear and bending springs. Soft enough that every
+// explicit method is stable at dt = 1e-4 s.
+Scene clothScene(int n, const std::string& method) {
+    const std::string json = R"({"model": "cloth", "cloth": {"nx": )" + std::to_string(n) + R"(, "ny": )" + std::to_string(n) +
+                             R"(, "pins": ["top-edge"]}, "springs": {"structural": {"k": 100, "kd": 0.01}, "shear": {"k": 50},
+                             "bending": {"k": 10}}, "forces": {"damping": 0.001}})";
+    return parseScene(json, "bench", {"solver.method=" + method, "solver.dt=1e-4"});
+}
+
+void perItem(benchmark::State& st, double springs, double particles) {
+    const double it = static_cast<double>(st.iterations());
+    st.counters["per_spring"] = benchmark::Counter(it * springs, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    st.counters["per_particle"] = benchmark::Counter(it * particles, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    st.counters["springs"] = springs;
+}
+}  // namespace
+
+// Spring forces of the whole cloth into f (Task 2.2), positions slightly disturbed.
+static void BM_ClothSpringForces(benchmark::State& st) {
+    const int n = static_cast<int>(st.range(0));
+    const MassSpringModel m = makeCloth(clothScene(n, "symplectic_euler"));
+    const Matrix3X x = m.state.x + 0.01 * Matrix3X::Random(3, m.state.size());
+    const Matrix3X v = Matrix3X::Random(3, m.state.size());
+    Matrix3X f = Matrix3X::Zero(3, m.state.size());
+    for (auto _ : st) {
+        f.setZero();
+        addClothSpringForces(m.springs, x, v, f);
+        benchmark::DoNotOptimize(f.data());
+        benchmark::ClobberMemory();
+    }
+    perItem(st, static_cast<double>(m.springs.size()), n * n);
+}
+BENCHMARK(BM_ClothSpringForces)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMicrosecond);
+
+// One step of the whole simulation (forces + integrator) per method.
+static void BM_ClothStep(benchmark::State& st, const char* method) {
+    const int n = static_cast<int>(st.range(0));
+    auto sim = makeSimulation(clothScene(n, method));
+    const double springs = static_cast<double>(sim->edges().size());
+    sim->step();  // set-up outside the timing (implicit Euler builds its sparsity pattern here)
+    for (auto _ : st) sim->step();
+    perItem(st, springs, n * n);
+}
+BENCHMARK_CAPTURE(BM_ClothStep, explicit_euler, "explicit_euler")->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ClothStep, symplectic_euler, "symplectic_euler")->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ClothStep, velocity_verlet, "velocity_verlet")->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ClothStep, rk4, "rk4")->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ClothStep, implicit_euler, "implicit_euler")->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
