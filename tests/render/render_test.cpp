@@ -186,6 +186,17 @@ TEST(Camera, ProjectUnprojectRoundTrip) {
     }
 }
 
+TEST(Camera, SceneViewOverridesTheFit) {
+    const Scene with = parseScene(R"({"model": "spring", "view": {"eye": [1, 2, 3], "target": [0, -1, 0], "fov": 50}})", "v.json");
+    const Camera c = sceneCamera(with, Vec3(-1, -1, -1), Vec3(1, 1, 1), 1.5);
+    EXPECT_EQ(c.eye, Vec3(1, 2, 3)) << "view.eye should be the camera position";
+    EXPECT_EQ(c.target, Vec3(0, -1, 0)) << "view.target should be looked at";
+    EXPECT_EQ(c.fovy, 50.0);
+    const Scene without = parseScene(R"({"model": "spring"})", "v.json");
+    const Camera f = sceneCamera(without, Vec3(-1, -1, -1), Vec3(1, 1, 1), 1.5);
+    EXPECT_EQ(f.target, Vec3(0, 0, 0)) << "without a view the camera is fitted to the box (its centre)";
+}
+
 TEST(Camera, PickParticleNearestToCursor) {
     const DrawData d = flatCloth();
     const Camera cam = frontCamera();
