@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     glfwMakeContextCurrent(win);
-    glfwSwapInterval(wave > 0 ? 0 : 1);
+    glfwSwapInterval(wave > 0 || frames > 0 ? 0 : 1);  // measuring or screenshots: no vsync
     ImGui::CreateContext();
     setupImGuiStyle();
     ImGui_ImplGlfw_InitForOpenGL(win, true);
