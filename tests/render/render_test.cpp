@@ -13,6 +13,7 @@
 #include <backends/imgui_impl_opengl2.h>
 
 #include "clothlab/core/grid.h"
+#include "clothlab/core/not_implemented.h"
 #include "clothlab/gui/app.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/render/camera.h"
@@ -330,6 +331,49 @@ TEST(App, EveryMethodRunsOrExplainsItself) {
             for (int x = 360; x < w; ++x) cloth += warm(img.at(x, y)) || cool(img.at(x, y));
         EXPECT_GT(cloth, 200) << method << ": the cloth should be drawn even when its method is not available";
     }
+    ImGui_ImplOpenGL2_Shutdown();
+    ImGui::DestroyContext();
+}
+
+// A stage stub hit while playing: the app pauses and shows "not implemented: exercise N.M ..." instead of crashing.
+namespace {
+class StubSimulation : public Simulation {
+public:
+    explicit StubSimulation(const Scene& s) : Simulation(s) {
+        state_.resize(2);
+        state_.x.col(1) = Vec3(0, -1, 0);
+        state_.w[0] = 0;
+        edges_.emplace_back(0, 1);
+    }
+    void step() override { throw NotImplemented("exercise 1.4 symplecticEulerStep"); }
+    std::vector<Metric> metrics() const override { return {}; }
+};
+}  // namespace
+
+TEST(App, StubShowsNotImplementedInsteadOfCrashing) {
+    const int w = 640, h = 400;
+    OffscreenContext ctx(w, h);
+    ImGui::CreateContext();
+    setupImGuiStyle();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(w, h);
+    ImGui_ImplOpenGL2_Init();
+    AppOptions o;
+    o.scene = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/spring.json";
+    o.factory = [](const Scene& s) { return std::make_unique<StubSimulation>(s); };
+    App app(o);
+    for (int k = 0; k < 3; ++k) {
+        io.DeltaTime = 1.0f / 60;
+        ImGui_ImplOpenGL2_NewFrame();
+        ImGui::NewFrame();
+        EXPECT_NO_THROW(app.frame(w, h));
+        ImGui::Render();
+        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+    }
+    EXPECT_EQ(app.message(), "not implemented: exercise 1.4 symplecticEulerStep")
+        << "the panel should name the unfinished task";
+    ASSERT_NE(app.simulation(), nullptr);
+    EXPECT_EQ(app.simulation()->state().t, 0.0) << "nothing should have advanced";
     ImGui_ImplOpenGL2_Shutdown();
     ImGui::DestroyContext();
 }

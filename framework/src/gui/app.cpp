@@ -144,7 +144,7 @@ void App::rebuild(bool keep_state) {
     message_.clear();
     grabbed_ = -1;
     try {
-        sim_ = makeSimulation(scene_);
+        sim_ = options_.factory ? options_.factory(scene_) : makeSimulation(scene_);
     } catch (const InputError& e) {
         message_ = std::string("not available: ") + e.what();
     } catch (const NotImplemented& e) {

@@ -5,6 +5,7 @@
 /// creates the GL context and the ImGui frame and calls App::frame() once per frame.
 #pragma once
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -36,6 +37,8 @@ struct AppOptions {
     bool play = true;         ///< start running
     int edges = -1;           ///< spring/constraint overlay: -1 by scene (on for springs and chains), 0 off, 1 on
     bool strain = false;      ///< colour the overlay by strain instead of by type
+    /// Builds the simulation of a scene (default: makeSimulation); tests put a stand-in here.
+    std::function<std::unique_ptr<Simulation>(const Scene&)> factory;
     int wave_grid = 0;        ///< > 0: benchmark mode, show an n x n cloth moved by a travelling wave instead of a simulation
 };
 
