@@ -99,9 +99,12 @@ int runRender(const RenderArgs& a) {
             for (long long k = 0; k < n; ++k) {
                 sim->step();
                 ++result.steps;
-                if (!sim->state().isFinite()) {
+                const State& st = sim->state();
+                const bool finite = st.isFinite();
+                if (!finite || (st.size() > 0 && st.x.colwise().norm().maxCoeff() > scene.report.blowup)) {
                     result.unstable = true;
-                    result.message = "unstable at step " + std::to_string(result.steps) + " (t = " + std::to_string(sim->state().t) + " s)";
+                    result.message = "unstable at step " + std::to_string(result.steps) + " (t = " + std::to_string(st.t) +
+                                     " s): " + (finite ? "a particle left the region |x| < report.blowup" : "NaN or infinite state");
                     break;
                 }
                 if (result.steps % every == 0 || (f == frames - 1 && k == n - 1)) {

@@ -189,7 +189,8 @@ void App::safeStep() {
         return;
     }
     last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (!sim_->state().isFinite()) {
+    const State& st = sim_->state();
+    if (!st.isFinite() || (st.size() > 0 && st.x.colwise().norm().maxCoeff() > scene_.report.blowup)) {
         message_ = "unstable at t = " + std::to_string(sim_->state().t) + " s: reduce dt or stiffness, then Reset";
         playing_ = false;
     }
