@@ -2,6 +2,7 @@
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/sim/mass_spring.h"
+#include "clothlab/sim/pbd.h"
 
 namespace clothlab {
 
@@ -16,6 +17,7 @@ std::unique_ptr<Simulation> makeSimulation(const Scene& scene) {
         return std::make_unique<MassSpringSimulation>(scene, makeChain(scene.chain));
     if (force_based && scene.model == "cloth")
         return std::make_unique<MassSpringSimulation>(scene, makeCloth(scene));
+    if ((method == "pbd" || method == "xpbd") && scene.model == "cloth") return std::make_unique<PbdSimulation>(scene);
     throw InputError(scene.file, "solver.method",
                      "\"" + method + "\" on model \"" + scene.model + "\" is not available in this build");
 }

@@ -1,0 +1,90 @@
+/// @file 05_bending.h
+/// @brief Stage 05 (Position Based Dynamics): the bending constraint (Biege-Constraint) and its stencils.
+///
+/// The student writes these functions in `exercises/05_bending/bending.cpp`;
+/// the task sheet is `exercises/05_bending/README.md`. Notation as on the slides and in
+/// Müller et al. 2007, appendix A: two triangles (p1, p3, p2) and (p1, p2, p4) share the edge
+/// p1–p2; positions are taken relative to p1 (so p1 = 0 in the formulas), with the normals
+/// \f[ \vec n_1 = \frac{\vec p_2\times\vec p_3}{|\vec p_2\times\vec p_3|},\qquad
+///     \vec n_2 = \frac{\vec p_2\times\vec p_4}{|\vec p_2\times\vec p_4|},\qquad d = \vec n_1\cdot\vec n_2 \f]
+/// and the cost \f$ C = \arccos(d) - \varphi_0 \f$. With this convention a flat stencil
+/// (p3 and p4 on opposite sides of the edge) has d = −1, i.e. φ = π.
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "clothlab/core/types.h"
+
+namespace clothlab {
+
+/// d = n1·n2 and its gradients q_i = ∂d/∂p_i (appendix A of Müller et al. 2007).
+struct BendingGradients {
+    double d = -1.0;     ///< n1·n2, clamped to [−1, 1] (dimensionless)
+    Vec3 q1{0, 0, 0};    ///< ∂d/∂p1, 1/m
+    Vec3 q2{0, 0, 0};    ///< ∂d/∂p2, 1/m
+    Vec3 q3{0, 0, 0};    ///< ∂d/∂p3, 1/m
+    Vec3 q4{0, 0, 0};    ///< ∂d/∂p4, 1/m
+    bool valid = false;  ///< false for a zero-area triangle (normals undefined): d = −1, all q zero
+};
+
+/// The corrections of one bending projection.
+struct BendingCorrection {
+    Vec3 dp1{0, 0, 0};  ///< Δp1, m
+    Vec3 dp2{0, 0, 0};  ///< Δp2, m
+    Vec3 dp3{0, 0, 0};  ///< Δp3, m
+    Vec3 dp4{0, 0, 0};  ///< Δp4, m
+};
+
+/// One bending constraint: an interior edge p1–p2 and the two opposite vertices.
+struct BendingStencil {
+    int i1 = 0;          ///< particle of the shared edge
+    int i2 = 0;          ///< the other particle of the shared edge
+    int i3 = 0;          ///< opposite vertex in the first triangle
+    int i4 = 0;          ///< opposite vertex in the second triangle
+    double phi0 = 0.0;   ///< rest angle φ0 = arccos(d) of the initial shape, rad (π: flat)
+};
+
+/// Exercise 5.1 — d = n1·n2 and the q-vectors q_i = ∂d/∂p_i (appendix A), with p_i relative to p1:
+/// \f[ \vec q_3 = \frac{\vec n_2\times\vec p_2 + (\vec p_2\times\vec n_1)\,d}{|\vec p_2\times\vec p_3|},\qquad
+///     \vec q_4 = \frac{\vec n_1\times\vec p_2 + (\vec p_2\times\vec n_2)\,d}{|\vec p_2\times\vec p_4|} \f]
+/// \f[ \vec q_2 = \frac{\vec p_3\times\vec n_2 + (\vec n_1\times\vec p_3)\,d}{|\vec p_2\times\vec p_3|}
+///               +\frac{\vec p_4\times\vec n_1 + (\vec n_2\times\vec p_4)\,d}{|\vec p_2\times\vec p_4|},\qquad
+///     \vec q_1 = -\vec q_2 - \vec q_3 - \vec q_4 \f]
+/// These are the negatives of the q-vectors printed on the slides and in the paper: the printed
+/// ones are −∂d/∂p_i (checked against finite differences; see the task sheet).
+/// Zero-area triangles (|p2 × p3| or |p2 × p4| below 1e-12 m²) and coincident points: valid = false,
+/// d = −1 and all q zero (never NaN). d is clamped to [−1, 1].
+/// @param p1, p2  the shared edge, m
+/// @param p3, p4  the opposite vertices, m
+/// @return        d, q1..q4, valid
+BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4);
+
+/// Exercise 5.2 — projection of the bending constraint C = arccos(d) − φ0.
+///
+/// The general PBD projection \f$\Delta\vec p_i = -s\,w_i\nabla_{\vec p_i}C\f$ with
+/// \f$ s = C / \sum_j w_j|\nabla_{\vec p_j}C|^2 \f$ and
+/// \f$\nabla_{\vec p_i}C = -\vec q_i/\sqrt{1-d^2}\f$ (q_i = ∂d/∂p_i from exercise 5.1) gives
+/// \f[ \Delta\vec p_i = +\frac{w_i\,\sqrt{1-d^2}\,(\arccos(d)-\varphi_0)}{\sum_j w_j|\vec q_j|^2}\,\vec q_i\;k \f]
+/// The slides print a minus sign here, which is right for their q-vectors (−∂d/∂p_i) and wrong for
+/// ours: the two sign flips cancel (see the task sheet). Returns zero corrections, never NaN, when the stencil is not
+/// valid, when 1 − d² < 1e-12 (flat or folded: arccos is not differentiable there), when
+/// Σ w_j|q_j|² is zero (all pinned) or when C = 0.
+/// @param p1, p2, p3, p4  positions as in bendingGradients(), m
+/// @param w1, w2, w3, w4  inverse masses, 1/kg
+/// @param phi0            rest angle φ0, rad
+/// @param k               stiffness in [0, 1]
+/// @return                Δp1..Δp4, m
+BendingCorrection projectBendingConstraint(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4,
+                                           double w1, double w2, double w3, double w4, double phi0, double k);
+
+/// Exercise 5.3 — the stencil topology: every interior edge of the triangle mesh (an edge shared
+/// by exactly two triangles) gives one stencil (i1, i2 = the edge, i3, i4 = the vertices opposite it
+/// in the two triangles) with the rest angle \f$\varphi_0 = \arccos(d)\f$ of the positions x.
+/// Boundary edges (one triangle) give none. Degenerate rest shape (not valid): φ0 = π.
+/// @param triangles  triangles as particle index triples
+/// @param x          rest positions, 3 x N, m
+/// @return           one stencil per interior edge (any order)
+std::vector<BendingStencil> bendingStencils(const std::vector<Eigen::Vector3i>& triangles, const Matrix3X& x);
+
+}  // namespace clothlab

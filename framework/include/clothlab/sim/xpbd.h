@@ -1,0 +1,37 @@
+/// @file xpbd.h
+/// @brief XPBD (Macklin, Müller, Chentanez 2016): compliant distance and bending constraints with a
+/// Lagrange multiplier λ per constraint, so the stiffness no longer depends on the iteration count.
+///
+/// For a constraint C with gradients ∇_i C, compliance α (inverse stiffness) and time step Δt:
+/// \f[ \tilde\alpha = \frac{\alpha}{\Delta t^2},\qquad
+///     \Delta\lambda = \frac{-C - \tilde\alpha\,\lambda}{\sum_i w_i|\nabla_i C|^2 + \tilde\alpha},\qquad
+///     \lambda \leftarrow \lambda + \Delta\lambda,\qquad \Delta\vec p_i = w_i\,\nabla_i C\,\Delta\lambda \f]
+/// λ starts at 0 in every (sub)step. α = 0 gives a hard constraint (PBD with k = 1).
+/// The gradients come from the stage functions (distanceGradient of stage 04, bendingGradients of stage 05).
+#pragma once
+#include "clothlab/exercise/04_distance.h"
+#include "clothlab/exercise/05_bending.h"
+
+namespace clothlab {
+
+/// One XPBD projection of the distance constraint C = |p1 − p2| − d.
+/// @param p1, p2       end points, m
+/// @param w1, w2       inverse masses, 1/kg
+/// @param d            rest length, m
+/// @param alphaTilde   α / Δt², kg⁻¹ (α in m/N)
+/// @param lambda       the constraint's multiplier λ (kg m), updated
+/// @return             Δp1, Δp2, m (zero if both pinned or the points coincide)
+DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
+                                       double alphaTilde, double& lambda);
+
+/// One XPBD projection of the bending constraint C = arccos(d) − φ0 (∇_i C = −q_i/√(1−d²)).
+/// @param p1, p2, p3, p4  positions as in bendingGradients(), m
+/// @param w1, w2, w3, w4  inverse masses, 1/kg
+/// @param phi0            rest angle, rad
+/// @param alphaTilde      α / Δt² (α in 1/(N m)), the compliance of the angle
+/// @param lambda          the constraint's multiplier λ, updated
+/// @return                Δp1..Δp4, m (zero in the degenerate cases of projectBendingConstraint())
+BendingCorrection projectBendingXpbd(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4, double w1,
+                                     double w2, double w3, double w4, double phi0, double alphaTilde, double& lambda);
+
+}  // namespace clothlab

@@ -1,0 +1,295 @@
+// Graded tests of stage 03 — the PBD loop.
+// Test names start with the task they check (Task3_3 = exercise 3.3). Points: 03_pbd_loop.points.json.
+// The loop is tested with forces and constraints written here (no distance, bending or collision
+// code of stages 04-06), so this stage is graded on its own. Task 3.3 calls your dampVelocities (3.1).
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "clothlab/exercise/03_pbd_loop.h"
+
+using namespace clothlab;
+
+namespace {
+
+std::string str(const Vec3& v) {
+    std::ostringstream s;
+    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+    return s.str();
+}
+
+const Vec3 kG(0.0, -9.81, 0.0);
+
+// A small "cloth": a 3 x 3 grid of particles with different masses.
+PbdParticles smallCloth() {
+    PbdParticles P;
+    P.x.resize(3, 9);
+    P.w.resize(9);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            P.x.col(r * 3 + c) = Vec3(0.5 * c, -0.5 * r, 0.1 * c * r);
+            P.w[r * 3 + c] = 1.0 + 0.5 * ((r + 2 * c) % 3);
+        }
+    P.v = Matrix3X::Zero(3, 9);
+    P.p = P.x;
+    return P;
+}
+
+Vec3 momentum(const PbdParticles& P) {
+    Vec3 m = Vec3::Zero();
+    for (int i = 0; i < P.x.cols(); ++i)
+        if (P.w[i] > 0) m += P.v.col(i) / P.w[i];
+    return m;
+}
+Vec3 angularMomentum(const PbdParticles& P) {
+    Vec3 L = Vec3::Zero();
+    for (int i = 0; i < P.x.cols(); ++i)
+        if (P.w[i] > 0) L += P.x.col(i).cross(P.v.col(i) / P.w[i]);
+    return L;
+}
+
+// Gravity as an external force: f_i = m_i g (none on pinned particles).
+PbdCallbacks gravityOnly(const VectorX& w) {
+    PbdCallbacks cb;
+    cb.externalForces = [w](const Matrix3X&, const Matrix3X&, Matrix3X& f) {
+        for (int i = 0; i < f.cols(); ++i)
+            if (w[i] > 0) f.col(i) += kG / w[i];
+    };
+    return cb;
+}
+
+// A distance constraint between particles a and b written here, mass-weighted.
+void projectLink(Matrix3X& p, const VectorX& w, int a, int b, double d) {
+    const Vec3 e = p.col(a) - p.col(b);
+    const double len = e.norm(), ws = w[a] + w[b];
+    if (len < 1e-12 || ws <= 0) return;
+    const Vec3 corr = (len - d) / (ws * len) * e;
+    p.col(a) -= w[a] * corr;
+    p.col(b) += w[b] * corr;
+}
+
+}  // namespace
+
+// ---- Task 3.1 ------------------------------------------------------------------------------------
+TEST(Task3_1_DampVelocities, RigidMotionIsNotDamped) {
+    PbdParticles P = smallCloth();
+    const Vec3 vlin(0.3, -1.0, 2.0), omega(0.5, 2.0, -1.0);
+    for (int i = 0; i < 9; ++i) P.v.col(i) = vlin + omega.cross(P.x.col(i));
+    const Matrix3X before = P.v;
+    dampVelocities(P.x, P.v, P.w, 0.7);
+    EXPECT_LT((P.v - before).cwiseAbs().maxCoeff(), 1e-10)
+        << "a rigidly moving and spinning cloth must not be slowed: damp only v_i - (v_cm + omega x r_i)";
+}
+
+TEST(Task3_1_DampVelocities, KeepsMomentumAndAngularMomentumWhileRelativeMotionDecays) {
+    PbdParticles P = smallCloth();
+    const Vec3 omega(0.0, 3.0, 0.5);
+    for (int i = 0; i < 9; ++i)
+        P.v.col(i) = Vec3(1, 0, 0) + omega.cross(P.x.col(i)) + Vec3(std::sin(3.0 * i), std::cos(5.0 * i), 0.3 * i - 1);
+    const Vec3 P0 = momentum(P), L0 = angularMomentum(P);
+    auto relative = [&] {  // kinetic energy of the motion relative to the best rigid fit (least squares here)
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(27, 6);
+        Eigen::VectorXd b(27);
+        for (int i = 0; i < 9; ++i) {
+            const double sm = std::sqrt(1.0 / P.w[i]);
+            const Vec3 r = P.x.col(i);
+            Eigen::Matrix3d rx;  // omega x r = -[r]x omega
+            rx << 0, r.z(), -r.y(), -r.z(), 0, r.x(), r.y(), -r.x(), 0;
+            A.block<3, 3>(3 * i, 0) = sm * Eigen::Matrix3d::Identity();
+            A.block<3, 3>(3 * i, 3) = sm * rx;
+            b.segment<3>(3 * i) = sm * P.v.col(i);
+        }
+        const Eigen::VectorXd sol = A.colPivHouseholderQr().solve(b);
+        return 0.5 * (A * sol - b).squaredNorm();
+    };
+    const double rel0 = relative();
+    ASSERT_GT(rel0, 0.1);
+    dampVelocities(P.x, P.v, P.w, 0.5);
+    EXPECT_LT((momentum(P) - P0).norm(), 1e-10) << "linear momentum changed from " << str(P0) << " to " << str(momentum(P));
+    EXPECT_LT((angularMomentum(P) - L0).norm(), 1e-10)
+        << "angular momentum changed from " << str(L0) << " to " << str(angularMomentum(P))
+        << ": use omega = I^-1 L with I = sum m_i (|r_i|^2 Id - r_i r_i^T)";
+    EXPECT_NEAR(relative(), 0.25 * rel0, 1e-9 * rel0) << "k = 0.5 must halve the relative velocities (quarter their energy)";
+}
+
+TEST(Task3_1_DampVelocities, PinnedParticlesAndZeroCoefficient) {
+    PbdParticles P = smallCloth();
+    P.w[0] = 0.0;
+    for (int i = 0; i < 9; ++i) P.v.col(i) = Vec3(i, -i, 0.5 * i);
+    P.v.col(0).setZero();
+    const Matrix3X before = P.v;
+    dampVelocities(P.x, P.v, P.w, 0.0);
+    EXPECT_EQ((P.v - before).cwiseAbs().maxCoeff(), 0.0) << "k_damping = 0 must not change any velocity";
+    dampVelocities(P.x, P.v, P.w, 1.0);
+    EXPECT_TRUE(P.v.allFinite()) << "a pinned particle (w = 0, infinite mass) must not produce NaN";
+    EXPECT_EQ(P.v.col(0).norm(), 0.0) << "a pinned particle keeps its (zero) velocity";
+}
+
+TEST(Task3_1_DampVelocities, ParticlesOnALineHaveNoSpinAboutIt) {
+    PbdParticles P;
+    P.x = Matrix3X::Zero(3, 3);
+    P.x(0, 1) = 1.0, P.x(0, 2) = 2.0;  // on the x axis: I is singular
+    P.w = VectorX::Ones(3);
+    P.v = Matrix3X::Zero(3, 3);
+    P.v(1, 0) = -1.0, P.v(1, 2) = 1.0;  // spin about z
+    P.v(0, 1) = 0.4;                    // plus motion along the line
+    dampVelocities(P.x, P.v, P.w, 1.0);
+    EXPECT_TRUE(P.v.allFinite()) << "collinear particles: the inertia tensor is singular, use its pseudo-inverse";
+    EXPECT_NEAR(P.v(1, 0), -1.0, 1e-9) << "the spin about z is rigid and must survive";
+    EXPECT_NEAR(P.v(0, 1), 0.4 / 3, 1e-9) << "the stretching along the line is relative motion and must be damped";
+}
+
+// ---- Task 3.2 ------------------------------------------------------------------------------------
+TEST(Task3_2_IterationStiffness, GivesTheSameTotalEffectForAnyIterationCount) {
+    for (double k : {0.1, 0.5, 0.9})
+        for (int n : {1, 2, 10, 100}) {
+            const double kp = iterationStiffness(k, n);
+            EXPECT_NEAR(std::pow(1.0 - kp, n), 1.0 - k, 1e-12)
+                << "k = " << k << ", n = " << n << ": n projections with k' must leave the error (1 - k)";
+        }
+    EXPECT_DOUBLE_EQ(iterationStiffness(0.3, 1), 0.3) << "one iteration: k' = k";
+    EXPECT_DOUBLE_EQ(iterationStiffness(1.0, 7), 1.0) << "k = 1 stays 1";
+    EXPECT_DOUBLE_EQ(iterationStiffness(0.0, 7), 0.0) << "k = 0 stays 0";
+    EXPECT_DOUBLE_EQ(iterationStiffness(0.4, 0), 0.4) << "zero iterations: return k";
+}
+
+// ---- Task 3.3 ------------------------------------------------------------------------------------
+TEST(Task3_3_PbdStep, FreeFallFollowsTheParabola) {
+    // Without constraints, PBD is symplectic Euler: error against x0 + v0 t + g t^2/2 is g t dt / 2.
+    for (double dt : {0.01, 0.005}) {
+        PbdParticles P = smallCloth();
+        const Vec3 v0(1.0, 2.0, -0.5);
+        for (int i = 0; i < 9; ++i) P.v.col(i) = v0;
+        const Matrix3X x0 = P.x;
+        const auto cb = gravityOnly(P.w);
+        const int n = static_cast<int>(std::lround(1.0 / dt));
+        for (int s = 0; s < n; ++s) pbdStep(P, cb, 0.0, 5, dt);
+        const double t = n * dt;
+        for (int i = 0; i < 9; ++i) {
+            const Vec3 exact = x0.col(i) + v0 * t + 0.5 * kG * t * t;
+            EXPECT_NEAR((P.x.col(i) - exact).norm(), 0.5 * kG.norm() * t * dt, 1e-9)
+                << "particle " << i << " at t = 1 s with dt = " << dt << ": x = " << str(P.x.col(i))
+                << ", parabola " << str(exact);
+            EXPECT_LT((P.v.col(i) - (v0 + kG * t)).norm(), 1e-9) << "velocity must be v0 + g t";
+        }
+    }
+}
+
+TEST(Task3_3_PbdStep, PinnedParticlesNeverMove) {
+    PbdParticles P = smallCloth();
+    P.w[0] = 0.0, P.w[2] = 0.0;  // two top corners
+    const Matrix3X x0 = P.x;
+    PbdCallbacks cb = gravityOnly(P.w);
+    const VectorX w = P.w;
+    cb.projectConstraints = [w](Matrix3X& p) {
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                if (c + 1 < 3) projectLink(p, w, r * 3 + c, r * 3 + c + 1, 0.5);
+                if (r + 1 < 3) projectLink(p, w, r * 3 + c, (r + 1) * 3 + c, 0.5);
+            }
+    };
+    for (int s = 0; s < 200; ++s) pbdStep(P, cb, 0.1, 10, 0.01);
+    EXPECT_EQ((P.x.col(0) - x0.col(0)).norm() + (P.x.col(2) - x0.col(2)).norm(), 0.0)
+        << "pinned particles (w = 0) moved: use w_i in line (5)";
+    EXPECT_EQ(P.v.col(0).norm(), 0.0) << "a pinned particle's velocity must stay zero";
+    EXPECT_LT(P.x(1, 7), x0(1, 7) - 0.01) << "the free bottom particle must move down under gravity";
+}
+
+TEST(Task3_3_PbdStep, ZeroIterationsGivePlainPrediction) {
+    PbdParticles P = smallCloth();
+    for (int i = 0; i < 9; ++i) P.v.col(i) = Vec3(0.1 * i, 0, 1);
+    const Matrix3X x0 = P.x, v0 = P.v;
+    PbdCallbacks cb = gravityOnly(P.w);
+    cb.projectConstraints = [](Matrix3X& p) { p.setZero(); };  // would be obvious if called
+    const double dt = 0.02;
+    pbdStep(P, cb, 0.0, 0, dt);
+    for (int i = 0; i < 9; ++i) {
+        const Vec3 v1 = v0.col(i) + dt * kG;
+        EXPECT_LT((P.x.col(i) - (x0.col(i) + dt * v1)).norm(), 1e-14)
+            << "zero iterations: x must be the prediction x + dt (v + dt w f)";
+        EXPECT_LT((P.v.col(i) - v1).norm(), 1e-12) << "zero iterations: v = (p - x)/dt = v + dt w f";
+    }
+}
+
+TEST(Task3_3_PbdStep, LinesRunInTheSlidesOrder) {
+    PbdParticles P = smallCloth();
+    for (int i = 0; i < 9; ++i) P.v.col(i) = Vec3(1, 0, 0);
+    const Matrix3X x0 = P.x;
+    const double dt = 0.1;
+    std::vector<std::string> log;
+    PbdCallbacks cb;
+    cb.externalForces = [&](const Matrix3X& x, const Matrix3X&, Matrix3X& f) {
+        log.push_back("forces");
+        EXPECT_EQ((x - x0).norm(), 0.0) << "line (5): forces at the old positions";
+        f.col(4) = Vec3(0, 10, 0);
+    };
+    cb.generateCollisionConstraints = [&](const Matrix3X& x, const Matrix3X& p) {
+        log.push_back("generate");
+        EXPECT_EQ((x - x0).norm(), 0.0) << "line (8): x must still be the old positions";
+        const Vec3 v4 = Vec3(1, 0, 0) + dt * P.w[4] * Vec3(0, 10, 0);
+        EXPECT_LT((p.col(4) - (x0.col(4) + dt * v4)).norm(), 1e-14) << "line (8): p must be the prediction x + dt v";
+    };
+    cb.projectConstraints = [&](Matrix3X& p) {
+        log.push_back("project");
+        p.col(3) += Vec3(0, 0, 0.01);  // each sweep moves particle 3 by 1 cm in z
+    };
+    cb.velocityUpdate = [&](const Matrix3X& x, Matrix3X& v) {
+        log.push_back("velocityUpdate");
+        EXPECT_NEAR(x(2, 3), x0(2, 3) + 0.03, 1e-14) << "line (14): x = p before velocityUpdate";
+        EXPECT_NEAR(v(2, 3), 0.03 / dt, 1e-12) << "line (13): v = (p - x)/dt before velocityUpdate";
+        v.col(3).setZero();
+    };
+    pbdStep(P, cb, 0.0, 3, dt);
+    const std::vector<std::string> want = {"forces", "generate", "project", "project", "project", "velocityUpdate"};
+    EXPECT_EQ(log, want) << "the callbacks must run in the order (5), (8), (10) x iterations, (16)";
+    EXPECT_EQ(P.v.col(3).norm(), 0.0) << "the velocity set by velocityUpdate must be kept";
+    EXPECT_NEAR(P.x(2, 3), x0(2, 3) + 0.03, 1e-14) << "x must be the projected p";
+}
+
+TEST(Task3_3_PbdStep, DampsBeforePredicting) {
+    // Two free particles flying apart; k_damping = 1 leaves only the rigid (common) motion.
+    PbdParticles P;
+    P.x = Matrix3X::Zero(3, 2);
+    P.x(0, 1) = 1.0;
+    P.w = VectorX::Ones(2);
+    P.v = Matrix3X::Zero(3, 2);
+    P.v(0, 0) = -1.0, P.v(0, 1) = 3.0;  // v_cm = (1, 0, 0)
+    P.p = P.x;
+    pbdStep(P, PbdCallbacks{}, 1.0, 4, 0.1);
+    EXPECT_NEAR(P.v(0, 0), 1.0, 1e-12) << "dampVelocities (line 6) must run with kDamping before the prediction";
+    EXPECT_NEAR(P.x(0, 0), 0.1, 1e-12) << "the prediction (line 7) must use the damped velocity";
+    EXPECT_NEAR(P.x(0, 1), 1.1, 1e-12) << "the prediction (line 7) must use the damped velocity";
+}
+
+TEST(Task3_3_PbdStep, SwingingChainKeepsItsLinks) {
+    // Two links from a pinned particle, released horizontally: a double pendulum whose links the
+    // solver iterations keep at their rest lengths, and which never rises above its start.
+    PbdParticles P;
+    P.x = Matrix3X::Zero(3, 3);
+    P.x(0, 1) = 0.5, P.x(0, 2) = 1.0;
+    P.w = VectorX::Constant(3, 2.0);
+    P.w[0] = 0.0;
+    P.v = Matrix3X::Zero(3, 3);
+    P.p = P.x;
+    PbdCallbacks cb = gravityOnly(P.w);
+    const VectorX w = P.w;
+    cb.projectConstraints = [w](Matrix3X& p) {
+        projectLink(p, w, 0, 1, 0.5);
+        projectLink(p, w, 1, 2, 0.5);
+    };
+    double lowest = 0.0, highest = -1.0;
+    for (int s = 0; s < 200; ++s) {
+        pbdStep(P, cb, 0.0, 50, 0.005);
+        lowest = std::min(lowest, P.x(1, 2));
+        if (s > 100) highest = std::max(highest, P.x(1, 2));
+        EXPECT_NEAR((P.x.col(1) - P.x.col(0)).norm(), 0.5, 5e-3) << "step " << s << ": first link length";
+        EXPECT_NEAR((P.x.col(2) - P.x.col(1)).norm(), 0.5, 5e-3) << "step " << s << ": second link length";
+    }
+    EXPECT_LT(lowest, -0.9) << "the chain must swing down (lowest end point " << lowest << " m)";
+    EXPECT_LT(highest, 1e-3) << "the chain end must never rise above its start height (energy)";
+}

@@ -1,0 +1,257 @@
+// Graded tests of stage 05 — the bending constraint and its stencils.
+// Test names start with the task they check (Task5_2 = exercise 5.2). Points: 05_bending.points.json.
+// The dihedral angle is computed here independently (normals of the two triangles), not with your code.
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "clothlab/core/grid.h"
+#include "clothlab/exercise/05_bending.h"
+
+using namespace clothlab;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string str(const Vec3& v) {
+    std::ostringstream s;
+    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+    return s.str();
+}
+
+// d = n1.n2 with n1 the normal of (p1, p2, p3) and n2 the normal of (p1, p2, p4), written independently.
+double dOf(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+    const Vec3 n1 = (p2 - p1).cross(p3 - p1).normalized(), n2 = (p2 - p1).cross(p4 - p1).normalized();
+    return n1.dot(n2);
+}
+double angleOf(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+    return std::acos(std::max(-1.0, std::min(1.0, dOf(p1, p2, p3, p4))));
+}
+
+// A stencil: the edge p1 = 0, p2 = (1, 0, 0) along x; p3 in the x-y plane at +y; p4 rotated by the
+// angle `open` about the edge (open = pi: flat, p4 at -y).
+struct Stencil {
+    Vec3 p[4];
+};
+Stencil hinge(double open, double skew = 0.0) {
+    Stencil s;
+    s.p[0] = Vec3(0.05, -0.02, 0.01);
+    s.p[1] = s.p[0] + Vec3(1.0, 0.0, 0.0);
+    s.p[2] = s.p[0] + Vec3(0.4, 0.8, 0.0);
+    s.p[3] = s.p[0] + Vec3(0.6 + skew, 0.7 * std::cos(open), 0.7 * std::sin(open));
+    return s;
+}
+
+double angleAfter(const Stencil& s, const BendingCorrection& c) {
+    return angleOf(s.p[0] + c.dp1, s.p[1] + c.dp2, s.p[2] + c.dp3, s.p[3] + c.dp4);
+}
+
+}  // namespace
+
+// ---- Task 5.1 ------------------------------------------------------------------------------------
+TEST(Task5_1_BendingGradients, DIsTheCosineOfTheDihedralAngle) {
+    for (double open : {0.3, 1.0, 2.0, 2.9}) {
+        const Stencil s = hinge(open, 0.1);
+        const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
+        EXPECT_TRUE(g.valid) << "a proper stencil must be valid";
+        EXPECT_NEAR(g.d, dOf(s.p[0], s.p[1], s.p[2], s.p[3]), 1e-12)
+            << "d must be n1.n2 with n1 = p2 x p3 / |p2 x p3|, n2 = p2 x p4 / |p2 x p4| (relative to p1)";
+    }
+}
+
+TEST(Task5_1_BendingGradients, QVectorsAreFiniteDifferenceGradientsOfD) {
+    const double h = 1e-6;
+    for (double open : {0.4, 1.3, 2.2, 2.8}) {
+        Stencil s = hinge(open, -0.15);
+        s.p[2] += Vec3(0.03, 0.0, 0.2);  // a general, non-symmetric stencil
+        const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
+        const Vec3 q[4] = {g.q1, g.q2, g.q3, g.q4};
+        for (int i = 0; i < 4; ++i)
+            for (int a = 0; a < 3; ++a) {
+                Stencil plus = s, minus = s;
+                plus.p[i][a] += h;
+                minus.p[i][a] -= h;
+                const double fd = (dOf(plus.p[0], plus.p[1], plus.p[2], plus.p[3]) -
+                                   dOf(minus.p[0], minus.p[1], minus.p[2], minus.p[3])) / (2 * h);
+                EXPECT_NEAR(q[i][a], fd, 1e-6) << "q" << i + 1 << " = " << str(q[i]) << " at opening angle " << open
+                                               << ": component " << a << " should be dd/dp = " << fd;
+            }
+    }
+}
+
+TEST(Task5_1_BendingGradients, ZeroAreaTriangleIsInvalidNotNaN) {
+    const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, 1, 0), d(0.5, -1, 0.2);
+    const auto g1 = bendingGradients(a, b, Vec3(2, 0, 0), d);  // p3 on the edge line
+    const auto g2 = bendingGradients(a, a, c, d);              // p1 = p2
+    for (const auto& g : {g1, g2}) {
+        EXPECT_FALSE(g.valid) << "a zero-area triangle has no normal: valid must be false";
+        EXPECT_TRUE(std::isfinite(g.d) && g.q1.allFinite() && g.q2.allFinite() && g.q3.allFinite() && g.q4.allFinite())
+            << "a zero-area triangle must not give NaN";
+        EXPECT_EQ(g.q1.norm() + g.q2.norm() + g.q3.norm() + g.q4.norm(), 0.0) << "invalid stencil: all q must be zero";
+    }
+}
+
+// ---- Task 5.2 ------------------------------------------------------------------------------------
+TEST(Task5_2_ProjectBending, ReducesTheErrorForSmallDeviations) {
+    for (double phi0 : {1.0, 2.0, 2.6}) {
+        for (double dev : {0.05, -0.05}) {
+            const Stencil s = hinge(phi0 + dev, 0.1);
+            const double before = angleOf(s.p[0], s.p[1], s.p[2], s.p[3]) - phi0;
+            const auto c = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], 1, 1, 1, 1, phi0, 1.0);
+            const double after = angleAfter(s, c) - phi0;
+            EXPECT_LT(std::abs(after), 0.1 * std::abs(before))
+                << "rest angle " << phi0 << ", deviation " << dev << ": |C| went from " << std::abs(before) << " to "
+                << std::abs(after) << " (a small deviation must be almost removed by one projection with k = 1; "
+                << "if |C| grows, check the sign of the correction)";
+        }
+    }
+}
+
+TEST(Task5_2_ProjectBending, ReducesTheErrorForMediumDeviations) {
+    for (double phi0 : {1.2, 2.0}) {
+        for (double dev : {0.5, -0.5}) {
+            const Stencil s = hinge(phi0 + dev, -0.1);
+            const double before = angleOf(s.p[0], s.p[1], s.p[2], s.p[3]) - phi0;
+            const auto c = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], 1, 2, 0.5, 1, phi0, 1.0);
+            const double after = angleAfter(s, c) - phi0;
+            EXPECT_LT(std::abs(after), 0.5 * std::abs(before))
+                << "rest angle " << phi0 << ", deviation " << dev << ": |C| went from " << std::abs(before) << " to "
+                << std::abs(after);
+        }
+    }
+}
+
+TEST(Task5_2_ProjectBending, ConservesLinearAndAngularMomentum) {
+    const Stencil s = hinge(1.7, 0.2);
+    const double w[4] = {1.0, 0.5, 2.0, 4.0};
+    const auto c = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], w[0], w[1], w[2], w[3], 1.2, 0.8);
+    const Vec3 dp[4] = {c.dp1, c.dp2, c.dp3, c.dp4};
+    Vec3 P = Vec3::Zero(), L = Vec3::Zero();
+    for (int i = 0; i < 4; ++i) {
+        P += dp[i] / w[i];
+        L += s.p[i].cross(dp[i] / w[i]);
+    }
+    EXPECT_GT(c.dp1.norm(), 1e-4) << "the stencil is bent away from its rest angle: something must move";
+    EXPECT_LT(P.norm(), 1e-12) << "sum m_i dp_i = " << str(P) << " must be zero (dp_i proportional to w_i q_i)";
+    EXPECT_LT(L.norm(), 1e-12) << "sum p_i x m_i dp_i = " << str(L) << " must be zero";
+}
+
+TEST(Task5_2_ProjectBending, PinnedParticlesDoNotMove) {
+    const Stencil s = hinge(1.7);
+    const auto c = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], 0, 0, 1, 0, 1.2, 1.0);
+    EXPECT_EQ(c.dp1.norm() + c.dp2.norm() + c.dp4.norm(), 0.0) << "particles with w = 0 must not move";
+    EXPECT_GT(c.dp3.norm(), 0.0) << "the free particle p3 must move";
+    EXPECT_LT(std::abs(angleAfter(s, c) - 1.2), 0.5 * std::abs(1.7 - 1.2)) << "moving p3 alone must reduce |C|";
+}
+
+TEST(Task5_2_ProjectBending, StiffnessScalesTheCorrection) {
+    const Stencil s = hinge(1.5);
+    const auto c1 = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], 1, 1, 1, 1, 1.3, 1.0);
+    const auto c2 = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], 1, 1, 1, 1, 1.3, 0.25);
+    EXPECT_LT((c2.dp3 - 0.25 * c1.dp3).norm(), 1e-12) << "stiffness k must scale the corrections";
+}
+
+TEST(Task5_2_ProjectBending, DegenerateCasesGiveZeroNotNaN) {
+    const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, 1, 0);
+    struct Case { const char* what; Vec3 p1, p2, p3, p4; double w; };
+    const Case cases[] = {
+        {"flat stencil (d = -1)", a, b, c, Vec3(0.5, -1, 0), 1.0},
+        {"folded stencil (d = +1)", a, b, c, Vec3(0.7, 2, 0), 1.0},
+        {"zero-area triangle", a, b, Vec3(2, 0, 0), Vec3(0.5, -1, 0.3), 1.0},
+        {"coincident points", a, a, a, a, 1.0},
+        {"all particles pinned", a, b, c, Vec3(0.5, -0.5, 0.7), 0.0},
+    };
+    for (const Case& k : cases) {
+        const auto r = projectBendingConstraint(k.p1, k.p2, k.p3, k.p4, k.w, k.w, k.w, k.w, 1.0, 1.0);
+        const bool finite = r.dp1.allFinite() && r.dp2.allFinite() && r.dp3.allFinite() && r.dp4.allFinite();
+        EXPECT_TRUE(finite) << k.what << ": the correction is NaN/Inf";
+        if (finite) {
+            EXPECT_EQ(r.dp1.norm() + r.dp2.norm() + r.dp3.norm() + r.dp4.norm(), 0.0) << k.what << ": nothing may move";
+        }
+    }
+}
+
+// ---- Task 5.3 ------------------------------------------------------------------------------------
+TEST(Task5_3_BendingStencils, OneStencilPerInteriorEdge) {
+    const int nx = 4, ny = 3;
+    ClothSpec spec;
+    spec.nx = nx, spec.ny = ny;
+    const State st = makeGridState(spec);
+    const auto tris = gridTriangles(nx, ny);
+    const auto stencils = bendingStencils(tris, st.x);
+    // Edges of the grid: horizontal, vertical, one diagonal per cell; boundary edges lie on the rim.
+    const int edges = (nx - 1) * ny + nx * (ny - 1) + (nx - 1) * (ny - 1);
+    const int boundary = 2 * (nx - 1) + 2 * (ny - 1);
+    ASSERT_EQ(static_cast<int>(stencils.size()), edges - boundary) << "one stencil per interior edge, none for the rim";
+    std::set<std::pair<int, int>> seen;
+    for (const auto& s : stencils) {
+        const auto e = std::minmax(s.i1, s.i2);
+        EXPECT_TRUE(seen.insert(e).second) << "edge " << e.first << "-" << e.second << " has two stencils";
+        // (i1, i2, i3) and (i1, i2, i4) must both be triangles of the mesh, i3 != i4.
+        int found = 0;
+        for (const auto& t : tris) {
+            std::set<int> ts{t[0], t[1], t[2]};
+            if (ts == std::set<int>{s.i1, s.i2, s.i3} || ts == std::set<int>{s.i1, s.i2, s.i4}) ++found;
+        }
+        EXPECT_EQ(found, 2) << "stencil (" << s.i1 << ", " << s.i2 << ", " << s.i3 << ", " << s.i4
+                            << "): i3 and i4 must be the vertices opposite the edge i1-i2 in its two triangles";
+        EXPECT_NEAR(s.phi0, kPi, 1e-6) << "a flat cloth has rest angle pi (d = -1 with this convention)";
+    }
+}
+
+TEST(Task5_3_BendingStencils, RestAnglesComeFromTheInitialShape) {
+    // Two triangles folded by 90 degrees about the edge 0-1.
+    Matrix3X x(3, 4);
+    x.col(0) = Vec3(0, 0, 0);
+    x.col(1) = Vec3(1, 0, 0);
+    x.col(2) = Vec3(0.5, 1, 0);
+    x.col(3) = Vec3(0.5, 0, 1);
+    const std::vector<Eigen::Vector3i> tris = {Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 0, 3)};
+    const auto st = bendingStencils(tris, x);
+    ASSERT_EQ(st.size(), 1u) << "two triangles sharing one edge give one stencil";
+    EXPECT_NEAR(st[0].phi0, angleOf(x.col(0), x.col(1), x.col(2), x.col(3)), 1e-12)
+        << "phi0 must be arccos(n1.n2) of the initial positions (here pi/2)";
+}
+
+TEST(Task5_3_BendingStencils, FoldedClothStaysAtItsRestAngle) {
+    // A 5 x 4 cloth folded by 60 degrees along its middle column.
+    ClothSpec spec;
+    spec.nx = 5, spec.ny = 4;
+    State st = makeGridState(spec);
+    for (int i = 0; i < st.size(); ++i) {
+        const double u = st.x(0, i) - 0.5;  // column 2 is the fold line at x = 0.5
+        if (u > 0) st.x.col(i) = Vec3(0.5 + u * std::cos(kPi / 3), st.x(1, i), u * std::sin(kPi / 3));
+    }
+    const auto tris = gridTriangles(spec.nx, spec.ny);
+    const auto stencils = bendingStencils(tris, st.x);
+    Matrix3X p = st.x;
+    for (int it = 0; it < 20; ++it)
+        for (const auto& s : stencils) {
+            const auto c = projectBendingConstraint(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), 1, 1, 1, 1,
+                                                    s.phi0, 1.0);
+            p.col(s.i1) += c.dp1, p.col(s.i2) += c.dp2, p.col(s.i3) += c.dp3, p.col(s.i4) += c.dp4;
+        }
+    EXPECT_LT((p - st.x).cwiseAbs().maxCoeff(), 1e-9) << "a cloth at its rest angles must not move under bending projections";
+    // Disturb it and project again: the bending error must shrink.
+    Matrix3X q = st.x;
+    q(2, 7) += 0.05, q(1, 12) -= 0.04, q(2, 18) -= 0.03;
+    auto rms = [&](const Matrix3X& y) {
+        double s2 = 0;
+        for (const auto& s : stencils) {
+            const double e = angleOf(y.col(s.i1), y.col(s.i2), y.col(s.i3), y.col(s.i4)) - s.phi0;
+            s2 += e * e;
+        }
+        return std::sqrt(s2 / stencils.size());
+    };
+    const double before = rms(q);
+    for (int it = 0; it < 20; ++it)
+        for (const auto& s : stencils) {
+            const auto c = projectBendingConstraint(q.col(s.i1), q.col(s.i2), q.col(s.i3), q.col(s.i4), 1, 1, 1, 1,
+                                                    s.phi0, 0.5);
+            q.col(s.i1) += c.dp1, q.col(s.i2) += c.dp2, q.col(s.i3) += c.dp3, q.col(s.i4) += c.dp4;
+        }
+    EXPECT_LT(rms(q), 0.1 * before) << "20 sweeps of bending projections must reduce the RMS angle error";
+}

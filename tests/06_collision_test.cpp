@@ -1,0 +1,332 @@
+// Graded tests of stage 06 — collision constraints and velocityUpdate.
+// Test names start with the task they check (Task6_4 = exercise 6.4). Points: 06_collision.points.json.
+// The whole-step tests run a small PBD loop written here (not your stage 03) with your collision code,
+// and compare with analytic solutions: incline with Coulomb friction, rebound height with restitution.
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "clothlab/exercise/06_collision.h"
+
+using namespace clothlab;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const Vec3 kG(0.0, -9.81, 0.0);
+
+std::string str(const Vec3& v) {
+    std::ostringstream s;
+    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+    return s.str();
+}
+
+Collider plane(const Vec3& point, const Vec3& normal, double mu = 0.0, double e = 0.0) {
+    Collider c;
+    c.type = Collider::Type::Plane;
+    c.point = point;
+    c.normal = normal.normalized();
+    c.friction = mu;
+    c.restitution = e;
+    return c;
+}
+Collider sphere(const Vec3& centre, double radius, double mu = 0.0, double e = 0.0) {
+    Collider c;
+    c.type = Collider::Type::Sphere;
+    c.point = centre;
+    c.radius = radius;
+    c.friction = mu;
+    c.restitution = e;
+    return c;
+}
+
+// Particles with gravity, colliders and optional extra constraints, stepped by lines (5)-(16).
+struct Particles {
+    Matrix3X x, v;
+    VectorX w;
+};
+using Extra = std::function<void(Matrix3X& p, const VectorX& w)>;
+void step(Particles& P, const std::vector<Collider>& colliders, double h, double dt, int iterations,
+          const Extra& extra = {}) {
+    for (int i = 0; i < P.x.cols(); ++i)
+        if (P.w[i] > 0) P.v.col(i) += dt * kG;
+    Matrix3X p = P.x + dt * P.v;
+    std::vector<CollisionConstraint> contacts;
+    for (int i = 0; i < P.x.cols(); ++i)
+        for (const Collider& c : colliders) {
+            CollisionConstraint cc;
+            const bool hit = c.type == Collider::Type::Plane
+                                 ? generatePlaneConstraint(i, P.x.col(i), p.col(i), c, h, dt, &cc)
+                                 : generateSphereConstraint(i, P.x.col(i), p.col(i), c, h, dt, &cc);
+            if (hit) contacts.push_back(cc);
+        }
+    for (int it = 0; it < iterations; ++it) {
+        if (extra) extra(p, P.w);
+        for (const auto& c : contacts) p.col(c.i) += projectCollisionConstraint(p.col(c.i), P.w[c.i], h, c);
+    }
+    P.v = (p - P.x) / dt;
+    P.x = p;
+    velocityUpdate(P.v, contacts);
+}
+
+// Signed distance of a point to the collider surface (outside positive).
+double distanceTo(const Collider& c, const Vec3& x) {
+    if (c.type == Collider::Type::Plane) return (x - c.point).dot(c.normal);
+    return (x - c.point).norm() - c.radius;
+}
+
+}  // namespace
+
+// ---- Task 6.1 ------------------------------------------------------------------------------------
+TEST(Task6_1_PlaneConstraint, GeneratedOnlyWithinTheThickness) {
+    const Collider c = plane(Vec3(0, 1, 0), Vec3(0, 1, 0), 0.3, 0.2);
+    CollisionConstraint cc;
+    EXPECT_FALSE(generatePlaneConstraint(3, Vec3(0, 2, 0), Vec3(0, 1.5, 0), c, 0.1, 0.01, &cc))
+        << "p is 0.5 m above the plane, thickness 0.1 m: no constraint";
+    EXPECT_TRUE(generatePlaneConstraint(3, Vec3(0, 2, 0), Vec3(0.1, 1.05, 0), c, 0.1, 0.01, &cc))
+        << "p is 0.05 m above the plane, closer than the thickness 0.1 m: a constraint";
+    EXPECT_EQ(cc.i, 3) << "the particle index";
+    EXPECT_LT((cc.n - Vec3(0, 1, 0)).norm(), 1e-12) << "n_s must be the plane normal";
+    EXPECT_NEAR((cc.q - Vec3(0, 1, 0)).dot(cc.n), 0.0, 1e-12) << "q_s must lie on the plane";
+    EXPECT_LT((cc.start - Vec3(0, 2, 0)).norm(), 1e-12) << "start must be x";
+    EXPECT_NEAR(cc.vnBefore, (1.05 - 2.0) / 0.01, 1e-9) << "vnBefore = (p - x).n / dt";
+    EXPECT_EQ(cc.friction, 0.3) << "friction of the collider";
+    EXPECT_EQ(cc.restitution, 0.2) << "restitution of the collider";
+}
+
+TEST(Task6_1_PlaneConstraint, FastParticleBelowThePlaneIsCaught) {
+    const Collider c = plane(Vec3(0, 0, 0), Vec3(0, 0, 1));
+    CollisionConstraint cc;
+    EXPECT_TRUE(generatePlaneConstraint(0, Vec3(0, 0, 1), Vec3(0, 0, -5), c, 0.01, 0.01, &cc))
+        << "a particle that ends 5 m below the plane must get a constraint";
+}
+
+// ---- Task 6.2 ------------------------------------------------------------------------------------
+TEST(Task6_2_SphereConstraint, EntryPointAndNormalAlongThePath) {
+    const Collider c = sphere(Vec3(1, 0, 0), 0.5);
+    CollisionConstraint cc;
+    // Straight down onto the top of the sphere.
+    ASSERT_TRUE(generateSphereConstraint(2, Vec3(1, 1, 0), Vec3(1, 0.3, 0), c, 0.0, 0.1, &cc))
+        << "the path (1,1,0) -> (1,0.3,0) enters the sphere of radius 0.5 around (1,0,0)";
+    EXPECT_LT((cc.n - Vec3(0, 1, 0)).norm(), 1e-9) << "entering from the top: n_s = (0, 1, 0), got " << str(cc.n);
+    EXPECT_LT((cc.q - Vec3(1, 0.5, 0)).norm(), 1e-9) << "q_s must be the top of the sphere, got " << str(cc.q);
+    // Oblique entry: the normal at the entry point, not at p.
+    const Vec3 x(0.2, 0.8, 0), p(1.0, 0.0, 0);
+    ASSERT_TRUE(generateSphereConstraint(2, x, p, c, 0.1, 0.1, &cc));
+    const double Rh = 0.6;
+    const Vec3 u = p - x, f = x - c.point;  // solve |f + t u| = Rh here
+    const double t = (-u.dot(f) - std::sqrt(u.dot(f) * u.dot(f) - u.squaredNorm() * (f.squaredNorm() - Rh * Rh))) / u.squaredNorm();
+    const Vec3 n = (f + t * u).normalized();
+    EXPECT_LT((cc.n - n).norm(), 1e-9) << "n_s must be the normal where the path enters the inflated sphere (radius R + h): want "
+                                       << str(n) << ", got " << str(cc.n);
+    EXPECT_LT((cc.q - (c.point + 0.5 * n)).norm(), 1e-9) << "q_s = c + R n_s";
+}
+
+TEST(Task6_2_SphereConstraint, FastParticleDoesNotTunnel) {
+    const Collider c = sphere(Vec3(0, 0, 0), 0.5);
+    CollisionConstraint cc;
+    // From 1 m above to 1 m below in one step: p is outside the sphere, but the path crossed it.
+    ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.1, 1, 0), Vec3(0.1, -1, 0), c, 0.01, 0.01, &cc))
+        << "the path crosses the whole sphere: a constraint must be generated (no tunnelling)";
+    EXPECT_GT(cc.n.y(), 0.9) << "the normal must be the one where the particle entered (top), got " << str(cc.n);
+    EXPECT_FALSE(generateSphereConstraint(0, Vec3(2, 1, 0), Vec3(2, -1, 0), c, 0.01, 0.01, &cc))
+        << "a path that passes beside the sphere gives no constraint";
+    EXPECT_FALSE(generateSphereConstraint(0, Vec3(0, 2, 0), Vec3(0, 1, 0), c, 0.01, 0.01, &cc))
+        << "a path that stops before the sphere gives no constraint";
+}
+
+TEST(Task6_2_SphereConstraint, StartInsideUsesTheClosestSurfacePoint) {
+    const Collider c = sphere(Vec3(0, 0, 0), 1.0);
+    CollisionConstraint cc;
+    ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.5, 0, 0), Vec3(0, 0.6, 0), c, 0.0, 0.01, &cc))
+        << "x and p inside the sphere: a constraint";
+    EXPECT_LT((cc.n - Vec3(0, 1, 0)).norm(), 1e-12) << "n_s must point from the centre to p";
+    EXPECT_LT((cc.q - Vec3(0, 1, 0)).norm(), 1e-12) << "q_s = c + R n_s";
+    ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.5, 0, 0), Vec3(0, 0, 0), c, 0.0, 0.01, &cc))
+        << "p at the centre: still a constraint";
+    EXPECT_TRUE(cc.n.allFinite() && std::abs(cc.n.norm() - 1.0) < 1e-12) << "p at the centre: n_s must be a unit vector, got "
+                                                                          << str(cc.n);
+}
+
+// ---- Task 6.3 ------------------------------------------------------------------------------------
+TEST(Task6_3_ProjectCollision, ViolatedConstraintIsSatisfiedExactly) {
+    CollisionConstraint cc;
+    cc.q = Vec3(0, 0, 0), cc.n = Vec3(0, 1, 0), cc.start = Vec3(0.3, 0.5, 0);
+    const Vec3 p(0.4, -0.2, 0.1);
+    const Vec3 dp = projectCollisionConstraint(p, 1.0, 0.05, cc);
+    EXPECT_NEAR((p + dp - cc.q).dot(cc.n) - 0.05, 0.0, 1e-12) << "after the projection C(p) = (p - q).n - h must be 0";
+    EXPECT_LT((dp - dp.dot(cc.n) * cc.n).norm(), 1e-12) << "without friction the correction is along n_s only";
+}
+
+TEST(Task6_3_ProjectCollision, InequalityOnlyWhenViolatedAndNotForPinned) {
+    CollisionConstraint cc;
+    cc.q = Vec3(0, 0, 0), cc.n = Vec3(0, 1, 0);
+    EXPECT_EQ(projectCollisionConstraint(Vec3(0, 0.2, 0), 1.0, 0.05, cc).norm(), 0.0)
+        << "C(p) >= 0: an inequality constraint must not pull the particle back to the surface";
+    EXPECT_EQ(projectCollisionConstraint(Vec3(0, -0.2, 0), 0.0, 0.05, cc).norm(), 0.0) << "w = 0 (pinned): no move";
+}
+
+TEST(Task6_3_ProjectCollision, StaticFrictionStopsSmallSlips) {
+    CollisionConstraint cc;
+    cc.q = Vec3(0, 0, 0), cc.n = Vec3(0, 1, 0), cc.start = Vec3(1, 0.01, 0);
+    cc.friction = 0.5;
+    const Vec3 p(1.02, -0.05, 0);  // 2 cm sideways, 6 cm too deep (h = 1 cm)
+    const Vec3 dp = projectCollisionConstraint(p, 1.0, 0.01, cc);
+    EXPECT_NEAR(p.x() + dp.x(), 1.0, 1e-12) << "|t| = 0.02 < mu |C| = 0.03: the particle must stick (no sideways slip)";
+    EXPECT_NEAR(p.y() + dp.y(), 0.01, 1e-12) << "and be pushed out to the thickness";
+    cc.friction = 0.2;
+    const Vec3 dp2 = projectCollisionConstraint(p, 1.0, 0.01, cc);
+    EXPECT_NEAR(p.x() + dp2.x(), 1.02, 1e-12) << "|t| = 0.02 > mu |C| = 0.012: the particle slides (no static friction)";
+}
+
+// ---- Task 6.4 ------------------------------------------------------------------------------------
+TEST(Task6_4_VelocityUpdate, RestitutionReflectsTheIncomingNormalVelocity) {
+    Matrix3X v = Matrix3X::Zero(3, 2);
+    v.col(1) = Vec3(0, 0.0, 0);  // after the solve: normal velocity removed
+    CollisionConstraint cc;
+    cc.i = 1, cc.n = Vec3(0, 1, 0), cc.vnBefore = -4.0, cc.restitution = 0.5;
+    velocityUpdate(v, {cc});
+    EXPECT_NEAR(v(1, 1), 2.0, 1e-12) << "e = 0.5, incoming -4 m/s: outgoing normal velocity +2 m/s";
+    EXPECT_EQ(v.col(0).norm(), 0.0) << "particles without contact keep their velocity";
+    v.col(1) = Vec3(0, 3.0, 0);  // already separating faster than e |v_in|
+    velocityUpdate(v, {cc});
+    EXPECT_NEAR(v(1, 1), 3.0, 1e-12) << "restitution must not slow a particle that separates faster";
+}
+
+TEST(Task6_4_VelocityUpdate, CoulombFrictionOnTheTangentialVelocity) {
+    Matrix3X v(3, 1);
+    v.col(0) = Vec3(1.0, 0.0, 0.0);
+    CollisionConstraint cc;
+    cc.i = 0, cc.n = Vec3(0, 1, 0), cc.vnBefore = -2.0, cc.friction = 0.25;
+    velocityUpdate(v, {cc});
+    EXPECT_NEAR(v(0, 0), 0.5, 1e-12) << "mu = 0.25 and a normal velocity change of 2 m/s remove 0.5 m/s of tangential velocity";
+    v.col(0) = Vec3(1.0, 0.0, 0.0);
+    cc.friction = 2.0;
+    velocityUpdate(v, {cc});
+    EXPECT_NEAR(v(0, 0), 0.0, 1e-12) << "friction stops the particle but never reverses it";
+    EXPECT_TRUE(v.allFinite());
+    v.col(0) = Vec3(1.0, 0.0, 0.0);
+    cc.vnBefore = 0.5;  // was separating: no normal impulse, no friction
+    velocityUpdate(v, {cc});
+    EXPECT_NEAR(v(0, 0), 1.0, 1e-12) << "no normal velocity change, no friction";
+}
+
+// ---- Whole steps (all tasks together) ---------------------------------------------------------------
+TEST(Task6_4_CollisionSteps, NothingPenetratesIncludingFastParticles) {
+    const std::vector<Collider> cols = {plane(Vec3(0, -1, 0), Vec3(0, 1, 0)), sphere(Vec3(0, 0, 0), 0.4)};
+    Particles P;
+    P.x.resize(3, 5);
+    P.x << 0.0, 0.1, -0.2, 0.3, 2.0,  //
+        1.0, 2.0, 1.5, 3.0, 0.0,      //
+        0.0, 0.1, 0.0, -0.1, 0.0;
+    P.v = Matrix3X::Zero(3, 5);
+    P.v.col(3) = Vec3(0, -200, 0);  // 2 m per step at dt = 0.01: faster than the sphere is wide
+    P.v.col(4) = Vec3(-150, 0, 0);  // sideways through the sphere
+    P.w = VectorX::Ones(5);
+    const double h = 0.01;
+    for (int s = 0; s < 100; ++s) {
+        step(P, cols, h, 0.01, 4);
+        for (int i = 0; i < 5; ++i)
+            for (const auto& c : cols)
+                ASSERT_GE(distanceTo(c, P.x.col(i)), -1e-9)
+                    << "step " << s << ": particle " << i << " at " << str(P.x.col(i)) << " is inside a collider";
+    }
+    EXPECT_GT(P.x(0, 4), 0.0) << "the sideways particle must have bounced back (not tunnelled to x < 0)";
+}
+
+TEST(Task6_4_CollisionSteps, ClothRestingOnAPlaneDoesNotJitter) {
+    // 4 x 4 particles joined by links, lying on the ground at the thickness h, 10 s of rest.
+    const double h = 0.01, dt = 0.01;
+    Particles P;
+    P.x.resize(3, 16);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) P.x.col(r * 4 + c) = Vec3(0.1 * c, h, 0.1 * r);
+    P.v = Matrix3X::Zero(3, 16);
+    P.w = VectorX::Constant(16, 16.0);
+    const Matrix3X x0 = P.x;
+    const Extra links = [](Matrix3X& p, const VectorX& w) {
+        auto link = [&](int a, int b) {
+            const Vec3 e = p.col(a) - p.col(b);
+            const double len = e.norm();
+            const Vec3 corr = (len - 0.1) / ((w[a] + w[b]) * len) * e;
+            p.col(a) -= w[a] * corr, p.col(b) += w[b] * corr;
+        };
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) {
+                if (c < 3) link(r * 4 + c, r * 4 + c + 1);
+                if (r < 3) link(r * 4 + c, r * 4 + c + 4);
+            }
+    };
+    const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), Vec3(0, 1, 0), 0.5)};
+    double maxDev = 0, maxV = 0;
+    for (int s = 0; s < 1000; ++s) {
+        step(P, cols, h, dt, 10, links);
+        maxDev = std::max(maxDev, (P.x - x0).cwiseAbs().maxCoeff());
+        maxV = std::max(maxV, P.v.cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(maxDev, 1e-6) << "a cloth resting on the ground moved by up to " << maxDev << " m over 10 s";
+    EXPECT_LT(maxV, 1e-4) << "a cloth resting on the ground reached a velocity of " << maxV << " m/s (jitter)";
+}
+
+TEST(Task6_4_CollisionSteps, BlockOnAnInclineSticksWhenMuIsAtLeastTanTheta) {
+    const double theta = 25.0 * kPi / 180.0, h = 0.01, dt = 0.005;
+    const Vec3 n(-std::sin(theta), std::cos(theta), 0);  // slope falls towards +x
+    for (double mu : {std::tan(theta) + 0.02, 0.8}) {
+        const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), n, mu)};
+        Particles P;
+        P.x = Matrix3X(3, 1);
+        P.x.col(0) = h * n;
+        P.v = Matrix3X::Zero(3, 1);
+        P.w = VectorX::Ones(1);
+        for (int s = 0; s < 400; ++s) step(P, cols, h, dt, 4);
+        EXPECT_LT((P.x.col(0) - h * n).norm(), 1e-9) << "mu = " << mu << " >= tan(theta) = " << std::tan(theta)
+                                                      << ": the block must stick, but it moved to " << str(P.x.col(0));
+    }
+}
+
+TEST(Task6_4_CollisionSteps, BlockOnAnInclineSlidesWithTheAnalyticAcceleration) {
+    const double theta = 30.0 * kPi / 180.0, h = 0.01, dt = 0.001, T = 1.0;
+    const Vec3 n(-std::sin(theta), std::cos(theta), 0);
+    for (double mu : {0.0, 0.2, 0.45}) {
+        const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), n, mu)};
+        Particles P;
+        P.x = Matrix3X(3, 1);
+        P.x.col(0) = h * n;
+        P.v = Matrix3X::Zero(3, 1);
+        P.w = VectorX::Ones(1);
+        const int steps = static_cast<int>(std::lround(T / dt));
+        for (int s = 0; s < steps; ++s) step(P, cols, h, dt, 4);
+        const double a = 9.81 * (std::sin(theta) - mu * std::cos(theta));
+        const double speed = P.v.col(0).norm();
+        EXPECT_NEAR(speed, a * T, 0.01 * a * T) << "mu = " << mu << ": speed after " << T << " s must be g (sin - mu cos) t = "
+                                                << a * T << " m/s";
+        const double dist = (P.x.col(0) - h * n).norm();
+        EXPECT_NEAR(dist, 0.5 * a * T * T, 0.015 * 0.5 * a * T * T) << "mu = " << mu << ": distance slid must be a t^2 / 2 = " << 0.5 * a * T * T << " m (1.5 %)";
+        EXPECT_NEAR((P.x.col(0)).dot(n), h, 1e-9) << "the block must stay on the slope at the thickness h";
+    }
+}
+
+TEST(Task6_4_CollisionSteps, RestitutionGivesTheAnalyticReboundHeight) {
+    const double H = 1.0, h = 0.01, dt = 1e-4;
+    for (double e : {0.3, 0.7}) {
+        const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), Vec3(0, 1, 0), 0.0, e)};
+        Particles P;
+        P.x = Matrix3X(3, 1);
+        P.x.col(0) = Vec3(0, h + H, 0);
+        P.v = Matrix3X::Zero(3, 1);
+        P.w = VectorX::Ones(1);
+        bool bounced = false;
+        double apex = 0.0;
+        for (int s = 0; s < 20000; ++s) {
+            step(P, cols, h, dt, 2);
+            if (P.v(1, 0) > 0) bounced = true;
+            if (bounced) apex = std::max(apex, P.x(1, 0) - h);
+            if (bounced && P.v(1, 0) < 0) break;
+        }
+        EXPECT_TRUE(bounced) << "e = " << e << ": the particle never bounced";
+        EXPECT_NEAR(apex, e * e * H, 0.02 * e * e * H) << "e = " << e << ": rebound height must be e^2 H = " << e * e * H << " m";
+    }
+}

@@ -1,0 +1,26 @@
+# Typical mistakes in stage 04. Each is the reference with one edit; ./lab test proves that
+# the graded tests catch every one (stage_04.mistake_caught.<name>). Included from tests/CMakeLists.txt.
+clothlab_mistake(sign_flipped FILE distance.cpp
+  FIND "return {-w1 * s, w2 * s};" REPLACE "return {w1 * s, -w2 * s};"
+  WHY "pushes a stretched constraint further apart")
+clothlab_mistake(weights_swapped FILE distance.cpp
+  FIND "return {-w1 * s, w2 * s};" REPLACE "return {-w2 * s, w1 * s};"
+  WHY "heavy particles move more than light ones: momentum is created")
+clothlab_mistake(no_mass_weighting FILE distance.cpp
+  FIND "const Vec3 s = (k * (len - d) / (wsum * len)) * e;" REPLACE "const Vec3 s = (k * (len - d) / (2.0 * len)) * e; (void)wsum;"
+  WHY "splits the correction half-half regardless of w (pinned particles move)")
+clothlab_mistake(missing_normalisation FILE distance.cpp
+  FIND "const Vec3 s = (k * (len - d) / (wsum * len)) * e;" REPLACE "const Vec3 s = (k * (len - d) / wsum) * e;"
+  WHY "uses p1 - p2 instead of the unit direction n")
+clothlab_mistake(no_degenerate_guard FILE distance.cpp
+  FIND "if (len < 1e-12 || wsum <= 0.0) return {Vec3::Zero(), Vec3::Zero()};" REPLACE ""
+  WHY "divides by zero for coincident points or two pinned particles")
+clothlab_mistake(stiffness_ignored FILE distance.cpp
+  FIND "const Vec3 s = (k * (len - d) / (wsum * len)) * e;" REPLACE "const Vec3 s = ((len - d) / (wsum * len)) * e;"
+  WHY "k is not applied")
+clothlab_mistake(gradient_not_normalised FILE distance.cpp
+  FIND "    return e / len;" REPLACE "    return e;"
+  WHY "gradient p1 - p2 instead of the unit vector")
+clothlab_mistake(rest_length_ignored FILE distance.cpp
+  FIND "return (p1 - p2).norm() - d;" REPLACE "return (p1 - p2).norm();"
+  WHY "C without the rest length")
