@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
     bool edges = false;
     cli.add_option("scene", scene, "Scene file (default: the first in --scenes)");
     cli.add_option("--scenes", scenes, "Folder the scene picker lists");
+    std::vector<std::string> sets;
+    cli.add_option("--set", sets, "Override a scene field, e.g. --set cloth.nx=32 (repeatable)");
     cli.add_option("--screenshot", screenshot, "Run --frames frames, save the window as PNG and quit");
     cli.add_option("--frames", frames, "Frames to run (0: until the window is closed)")->check(CLI::NonNegativeNumber);
     cli.add_option("--size", size, "Window size WIDTHxHEIGHT");
@@ -52,7 +54,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     glfwMakeContextCurrent(win);
-    glfwSwapInterval(wave > 0 ? 0 : 1);
+    glfwSwapInterval(wave > 0 || frames > 0 ? 0 : 1);  // measuring or screenshots: no vsync
     ImGui::CreateContext();
     setupImGuiStyle();
     ImGui_ImplGlfw_InitForOpenGL(win, true);
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
         o.scene = scene;
         o.scenes_dir = scenes;
         o.wave_grid = wave;
+        o.sets = sets;
         o.edges = edges ? 1 : -1;
         App app(o);
         int frame = 0, fw = W, fh = H;

@@ -99,9 +99,12 @@ int runRender(const RenderArgs& a) {
             for (long long k = 0; k < n; ++k) {
                 sim->step();
                 ++result.steps;
-                if (!sim->state().isFinite()) {
+                const State& st = sim->state();
+                const bool finite = st.isFinite();
+                if (!finite || (st.size() > 0 && st.x.colwise().norm().maxCoeff() > scene.report.blowup)) {
                     result.unstable = true;
-                    result.message = "unstable at step " + std::to_string(result.steps) + " (t = " + std::to_string(sim->state().t) + " s)";
+                    result.message = "unstable at step " + std::to_string(result.steps) + " (t = " + std::to_string(st.t) +
+                                     " s): " + (finite ? "a particle left the region |x| < report.blowup" : "NaN or infinite state");
                     break;
                 }
                 if (result.steps % every == 0 || (f == frames - 1 && k == n - 1)) {
@@ -178,9 +181,11 @@ int runRender(const RenderArgs& a) {
 struct GuiArgs {
     std::string scene, screenshot, scenes = CLOTHLAB_SCENES_DIR, size = "1280x800";
     int frames = 30, wave = 0, edges = -1;
+    bool strain = false;
+    std::vector<std::string> sets;
 };
 
-int runGui(const GuiArgs& a, bool bench) {
+int runGui(const GuiArgs& a) {
     int W, H;
     parseSize(a.size, W, H);
     OffscreenContext ctx(W, H);
@@ -190,6 +195,8 @@ int runGui(const GuiArgs& a, bool bench) {
     o.scenes_dir = a.scenes;
     o.wave_grid = a.wave;
     o.edges = a.edges;
+    o.strain = a.strain;
+    o.sets = a.sets;
     App app(o);
     // The first frames build the font texture and lay out the panel; time the rest.
     const int warm = 3, frames = std::max(a.frames, warm + 1);
@@ -203,8 +210,7 @@ int runGui(const GuiArgs& a, bool bench) {
     }
     const Image img = ctx.read();
     const double s = seconds(t0, Clock::now()), n = frames - warm;
-    if (bench)
-        std::cout << "app frame " << W << "x" << H << (a.wave > 1 ? ", " + std::to_string(a.wave) + "x" + std::to_string(a.wave) + " cloth" : "")
+    std::cout << "app frame " << W << "x" << H << (a.wave > 1 ? ", " + std::to_string(a.wave) + "x" + std::to_string(a.wave) + " cloth" : "")
                   << ": " << 1000 * s / n << " ms per frame (" << n / s << " fps, OSMesa)\n";
     if (!a.screenshot.empty()) {
         writePng(a.screenshot, img);
@@ -240,10 +246,12 @@ int main(int argc, char** argv) {
     g->add_option("scene", ga.scene, "Scene file (default: the first in --scenes)");
     g->add_option("--screenshot", ga.screenshot, "PNG file")->required();
     g->add_option("--frames", ga.frames, "Frames to run before the screenshot")->check(CLI::Range(1, 100000));
+    g->add_option("--set", ga.sets, "Override a scene field, e.g. --set cloth.nx=32 (repeatable)");
     g->add_option("--scenes", ga.scenes, "Folder the scene picker lists");
     g->add_option("--size", ga.size, "Window size WIDTHxHEIGHT");
     g->add_flag_callback("--edges", [&] { ga.edges = 1; }, "Start with the spring/constraint overlay shown");
-    g->callback([&] { code = runGui(ga, false); });
+    g->add_flag("--strain", ga.strain, "Start with the overlay coloured by strain");
+    g->callback([&] { code = runGui(ga); });
 
     GuiArgs ba;
     ba.frames = 60;
@@ -253,9 +261,10 @@ int main(int argc, char** argv) {
     b->add_option("--size", ba.size, "Window size WIDTHxHEIGHT");
     b->add_option("--screenshot", ba.screenshot, "Also save the last frame");
     b->add_flag_callback("--edges", [&] { ba.edges = 1; }, "Draw the spring/constraint overlay too");
+    b->add_flag("--strain", ba.strain, "Draw the overlay coloured by strain");
     b->callback([&] {
         if (ba.wave == 0) ba.wave = 32;
-        code = runGui(ba, true);
+        code = runGui(ba);
     });
 
     try {

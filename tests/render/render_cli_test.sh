@@ -30,6 +30,10 @@ expect_error bad_dt "error: $tmp/bad.json: solver.dt" render "$tmp/bad.json" --o
 printf '{"model": "spring", "view": {"eye": [0, 0, 1], "target": [0, 0, 1]}}' >"$tmp/badview.json"
 expect_error bad_view "error: $tmp/badview.json: view.target" render "$tmp/badview.json" --out "$tmp/x"
 
+# A blow-up stops with one error line (frames up to it are written), not with garbage pictures.
+expect_error unstable "error: $root/scenes/spring.json: solver: unstable at step" render "$root/scenes/spring.json" \
+  --set solver.method=explicit_euler --set solver.dt=0.2 --seconds 100 --fps 1 --size 160x120 --out "$tmp/unstable" --quiet
+
 # A video only with ffmpeg; without it a clear note and the frames anyway.
 if "$exe" render "$root/scenes/spring.json" --seconds 0.1 --fps 20 --size 320x240 --out "$tmp/v" --video "$tmp/v.mp4" --quiet >"$tmp/out" 2>&1; then
   if command -v ffmpeg >/dev/null; then [[ -s $tmp/v.mp4 ]] || bad "video: no $tmp/v.mp4"

@@ -116,7 +116,7 @@ App::App(const AppOptions& options) : options_(options) {
 
 bool App::load(const std::string& path) {
     try {
-        original_ = loadScene(path);
+        original_ = loadScene(path, path == options_.scene ? options_.sets : std::vector<std::string>{});
     } catch (const InputError& e) {
         message_ = std::string("error: ") + e.what();
         return false;
@@ -128,7 +128,8 @@ bool App::load(const std::string& path) {
     user_pins_.clear();
     energy_.clear(), error_.clear(), step_ms_.clear();
     camera_set_ = false;
-    view_.edges = options_.edges < 0 ? (scene_.model != "cloth" && options_.wave_grid < 2) : options_.edges == 1;
+    view_.color_by_strain = options_.strain;
+    view_.edges = options_.strain ? true : options_.edges < 0 ? (scene_.model != "cloth" && options_.wave_grid < 2) : options_.edges == 1;
     rebuild(false);
     return true;
 }
@@ -143,7 +144,7 @@ void App::rebuild(bool keep_state) {
     message_.clear();
     grabbed_ = -1;
     try {
-        sim_ = makeSimulation(scene_);
+        sim_ = options_.factory ? options_.factory(scene_) : makeSimulation(scene_);
     } catch (const InputError& e) {
         message_ = std::string("not available: ") + e.what();
     } catch (const NotImplemented& e) {
@@ -188,7 +189,8 @@ void App::safeStep() {
         return;
     }
     last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (!sim_->state().isFinite()) {
+    const State& st = sim_->state();
+    if (!st.isFinite() || (st.size() > 0 && st.x.colwise().norm().maxCoeff() > scene_.report.blowup)) {
         message_ = "unstable at t = " + std::to_string(sim_->state().t) + " s: reduce dt or stiffness, then Reset";
         playing_ = false;
     }
@@ -306,7 +308,9 @@ void App::frame(int width, int height) {
         drawBounds(d, lo, hi);
         // Leave room for the motion: a hanging cloth or chain swings below its pins.
         const double reach = (hi - lo).maxCoeff();
-        if (scene_.model != "spring") lo.y() -= 0.5 * reach;
+        bool pinned = false;
+        for (int i = 0; i < d.w.size(); ++i) pinned = pinned || d.w[i] == 0;
+        if (scene_.model != "spring" && pinned) lo.y() -= 0.5 * reach;
         const double panel = 360.0;
         cam_ = sceneCamera(scene_, lo, hi, double(width - panel) / height);
         // Shift the view so the scene sits in the part of the window right of the panel.
@@ -322,6 +326,17 @@ void App::frame(int width, int height) {
     handleMouse(width, height);
     d = currentDrawData();
     renderer_.draw(d, cam_, view_, width, height);
+    if (save_view_) {
+        // The 3-D view without the panel, as drawn just now.
+        save_view_ = false;
+        const std::string name = "clothlab_view_" + std::to_string(++saved_) + ".png";
+        try {
+            writePng(name, readPixels(width, height));
+            status_ = "saved " + (std::filesystem::current_path() / name).string();
+        } catch (const std::exception& e) {
+            message_ = std::string("error: ") + e.what();
+        }
+    }
     panel(width, height);
     drawOverlay(d, view_, 360.0f);
 }
@@ -331,11 +346,15 @@ void App::panel(int /*width*/, int height) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(340, height * scale - 16), ImGuiCond_Always);
     ImGui::Begin("clothlab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(190);
     if (!message_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kRed);
         ImGui::TextWrapped("%s", message_.c_str());
         ImGui::PopStyleColor();
     }
+    if (options_.wave_grid > 1)
+        ImGui::TextWrapped("Benchmark: the view shows a %dx%d cloth moved by a travelling wave (no simulation).",
+                           options_.wave_grid, options_.wave_grid);
     panelScene();
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) panelParameters();
     if (ImGui::CollapsingHeader("View")) panelView();
@@ -344,6 +363,7 @@ void App::panel(int /*width*/, int height) {
     ImGui::Separator();
     ImGui::TextDisabled("left drag: particle / orbit   wheel: zoom");
     ImGui::TextDisabled("right click or P: pin/unpin   space: play");
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
@@ -370,7 +390,10 @@ void App::panelScene() {
     ImGui::SameLine();
     if (ImGui::Button("Reset")) rebuild(false);
     ImGui::SameLine();
+    if (ImGui::Button("Save PNG")) save_view_ = true;
+    ImGui::SameLine();
     ImGui::Text("t = %.3f s", sim_ ? sim_->state().t : 0.0);
+    if (!status_.empty()) ImGui::TextDisabled("%s", status_.c_str());
     float sp = static_cast<float>(speed_);
     if (ImGui::SliderFloat("speed", &sp, 0.01f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) speed_ = sp;
     if (sim_) ImGui::Text("%d particles, %zu edges, step %.3f ms", sim_->state().size(), sim_->edges().size(), last_step_ms_);
@@ -402,16 +425,26 @@ void App::panelParameters() {
                 ImGui::PushID(name);
                 changed |= ImGui::Checkbox("##on", &g->enabled);
                 ImGui::SameLine();
+                ImGui::SetNextItemWidth(155);
                 changed |= sliderD((std::string(name) + " k").c_str(), g->k, 1, 1e5, "%.0f", true);
                 ImGui::PopID();
             }
+        if (!position_based) {
+            changed |= ImGui::Checkbox("Provot", &scene_.provot.enabled);
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(110);
+            double pct = scene_.provot.max_strain * 100;
+            changed |= sliderD("tau [%]", pct, 0.1, 50, "%.1f", true);
+            scene_.provot.max_strain = pct / 100;
+        }
         struct C { const char* name; ConstraintGroup* g; } cons[] = {{"distance", &scene_.constraints.distance},
-                                                                 {"bending c.", &scene_.constraints.bending}};
+                                                                 {"bending", &scene_.constraints.bending}};
         if (position_based)
             for (auto& [name, g] : cons) {
                 ImGui::PushID(name);
                 changed |= ImGui::Checkbox("##on", &g->enabled);
                 ImGui::SameLine();
+                ImGui::SetNextItemWidth(155);
                 if (sv.method == "xpbd") changed |= sliderD((std::string(name) + " alpha").c_str(), g->compliance, 0, 1e-2, "%.2e");
                 else changed |= sliderD((std::string(name) + " k").c_str(), g->stiffness, 0, 1, "%.3f");
                 ImGui::PopID();

@@ -93,7 +93,8 @@ Camera fitCamera(const Vec3& lo, const Vec3& hi, double aspect) {
     double dist = r / std::sin(half) * 1.25;  // the bounding sphere plus a margin: sees everything
     cam.target = c;
     cam.eye = c + dist * dir;
-    // Then move closer until the box's corners fill about 85 % of the view (a few fixed-point steps).
+    // Then move closer until the box's corners fill about 75 % of the view (a few fixed-point steps),
+    // leaving room for markers and the overlay text.
     for (int it = 0; it < 6; ++it) {
         const Eigen::Matrix4d pv = cam.projection(aspect) * cam.view();
         double m = 0.0;
@@ -103,7 +104,7 @@ Camera fitCamera(const Vec3& lo, const Vec3& hi, double aspect) {
             if (q[3] <= 0) { m = 10; break; }
             m = std::max({m, std::abs(q[0] / q[3]), std::abs(q[1] / q[3])});
         }
-        const double f = std::clamp(m / 0.85, 0.5, 2.0);
+        const double f = std::clamp(m / 0.75, 0.5, 2.0);
         if (std::abs(f - 1) < 0.01) break;
         dist *= f;
         cam.eye = c + dist * dir;

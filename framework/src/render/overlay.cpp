@@ -29,7 +29,7 @@ void drawOverlay(const DrawData& d, const RenderOptions& opt, float left) {
         dl->AddRectFilled(ImVec2(q.x - 4, q.y - 4), ImVec2(q.x + 190, size.y - 4), IM_COL32(255, 255, 255, 200), 4);
         dl->AddCircleFilled(ImVec2(q.x + 8, q.y + lh / 2), 6, IM_COL32(242, 140, 38, 255));
         dl->AddText(ImVec2(q.x + 20, q.y), ink, "simulated");
-        dl->AddCircleFilled(ImVec2(q.x + 8, q.y + lh * 1.5f), 6, IM_COL32(64, 190, 90, 150));
+        dl->AddCircle(ImVec2(q.x + 8, q.y + lh * 1.5f), 7, IM_COL32(26, 178, 64, 230), 24, 2.5f);
         dl->AddText(ImVec2(q.x + 20, q.y + lh), ink, "analytic solution");
     }
     if (!edges_shown || d.edges.empty()) return;
@@ -37,9 +37,9 @@ void drawOverlay(const DrawData& d, const RenderOptions& opt, float left) {
     if (opt.color_by_strain) {
         // A vertical colour bar from -range (blue) to +range (red).
         const float h = 120, w = 14;
-        p = ImVec2(size.x - 120, size.y - h - 34);
-        dl->AddRectFilled(ImVec2(p.x - 8, p.y - lh - 8), ImVec2(size.x - 8, p.y + h + 24), IM_COL32(255, 255, 255, 200), 4);
-        dl->AddText(ImVec2(p.x, p.y - lh - 2), ink, "strain l/l0 - 1");
+        p = ImVec2(size.x - 130, size.y - h - 24);
+        dl->AddRectFilled(ImVec2(p.x - 8, p.y - 2 * lh - 4), ImVec2(size.x - 8, size.y - 6), IM_COL32(255, 255, 255, 200), 4);
+        dl->AddText(ImVec2(p.x, p.y - 2 * lh), ink, "strain l/l0 - 1");
         const int steps = 24;
         for (int k = 0; k < steps; ++k) {
             const double s0 = opt.strain_range * (1 - 2.0 * k / steps), s1 = opt.strain_range * (1 - 2.0 * (k + 1) / steps);

@@ -88,6 +88,7 @@ Eigen::Vector3f strainColor(double strain, double range) {
 void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height) {
     glViewport(0, 0, width, height);
     glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_DITHER);
     glClearColor(0.93f, 0.94f, 0.96f, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDisable(GL_TEXTURE_2D);
@@ -121,6 +122,8 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixd(V.data());
 
+    right_ = V.block<1, 3>(0, 0).transpose();
+    up_ = V.block<1, 3>(1, 0).transpose();
     // Size of what is seen, for grid spacing, marker and sphere sizes.
     const double scale = (cam.eye - cam.target).norm() * std::sin(cam.fovy * kPi / 360);
 
@@ -174,7 +177,17 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
             for (const auto& t : d.triangles)
                 for (int k = 0; k < 3; ++k) glVertex3d(d.x(0, t[k]), sy, d.x(2, t[k]));
             glEnd();
-        } else {
+        }
+        for (const Collider& c : d.colliders) {
+            if (c.type != Collider::Type::Sphere || !opt.colliders) continue;
+            glBegin(GL_TRIANGLE_FAN);
+            glVertex3d(c.point.x(), sy, c.point.z());
+            for (int k = 0; k <= 48; ++k)
+                glVertex3d(c.point.x() + 0.9 * c.radius * std::cos(2 * kPi * k / 48), sy,
+                           c.point.z() + 0.9 * c.radius * std::sin(2 * kPi * k / 48));
+            glEnd();
+        }
+        if (d.triangles.empty()) {
             for (int i = 0; i < d.x.cols(); ++i) {
                 glBegin(GL_TRIANGLE_FAN);
                 glVertex3d(d.x(0, i), sy, d.x(2, i));
@@ -195,17 +208,6 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
             if (c.type == Collider::Type::Sphere) {
                 setMaterial(GL_FRONT_AND_BACK, {0.55f, 0.60f, 0.66f}, 0.35f, 40);
                 drawSphere(c.point, std::max(c.radius - 0.5e-3 * scale, 0.0), 48, 24);
-            } else if (!(ground_is_plane && c.normal.y() > 0.99)) {
-                Vec3 a, b;
-                planeAxes(c.normal, a, b);
-                const Vec3 o = c.point + (cam.target - c.point).dot(a) * a + (cam.target - c.point).dot(b) * b;
-                const double e = 1.5 * scale;
-                setMaterial(GL_FRONT_AND_BACK, {0.70f, 0.72f, 0.75f}, 0.1f, 10);
-                glBegin(GL_QUADS);
-                glNormal3d(c.normal.x(), c.normal.y(), c.normal.z());
-                const Vec3 quad[4] = {o - e * a - e * b, o + e * a - e * b, o + e * a + e * b, o - e * a + e * b};
-                for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
-                glEnd();
             }
         }
         glDisable(GL_LIGHTING);
@@ -214,6 +216,33 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
     if (opt.edges || d.triangles.empty()) drawEdges(d, opt, scale);
     drawParticles(d, opt, scale);
+
+    // Planes other than the ground: translucent panels with a border, drawn last so what lies behind shows.
+    if (opt.colliders) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        for (const Collider& c : d.colliders) {
+            if (c.type != Collider::Type::Plane || (ground_is_plane && c.normal.y() > 0.99)) continue;
+            Vec3 a, b;
+            planeAxes(c.normal, a, b);
+            const Vec3 o = c.point + (cam.target - c.point).dot(a) * a + (cam.target - c.point).dot(b) * b;
+            const double e = 1.2 * scale;
+            const Vec3 quad[4] = {o - e * a - e * b, o + e * a - e * b, o + e * a + e * b, o - e * a + e * b};
+            glColor4f(0.55f, 0.62f, 0.75f, 0.30f);
+            glBegin(GL_QUADS);
+            for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
+            glEnd();
+            glColor4f(0.30f, 0.36f, 0.50f, 0.8f);
+            glLineWidth(1.5f);
+            glBegin(GL_LINE_LOOP);
+            for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
+            glEnd();
+            glLineWidth(1.0f);
+        }
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
     glFinish();
 }
 
@@ -348,16 +377,28 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
             setMaterial(GL_FRONT_AND_BACK, pinned ? Eigen::Vector3f(0.85f, 0.12f, 0.10f) : Eigen::Vector3f(0.95f, 0.55f, 0.15f), 0.5f, 50);
             drawSphere(d.x.col(i), (pinned ? 0.035 : (n > 3 ? 0.045 : 0.08)) * scale, 24, 12);
         }
-        // The analytic solution as a translucent green ghost.
+        // The analytic solution as a green ring facing the camera, drawn on top.
+        glDisable(GL_LIGHTING);
+        glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
-        const float amb[4] = {0.1f, 0.3f, 0.15f, 0.45f}, dif[4] = {0.25f, 0.75f, 0.35f, 0.45f};
-        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, amb);
-        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, dif);
-        for (const Vec3& g : d.ghosts) drawSphere(g, (n > 3 ? 0.05 : 0.09) * scale, 24, 12);
-        glDepthMask(GL_TRUE);
+        glEnable(GL_LINE_SMOOTH);
+        glLineWidth(3.0f);
+        glColor4f(0.10f, 0.70f, 0.25f, 0.9f);
+        const double gr = (n > 3 ? 0.06 : 0.11) * scale;
+        for (const Vec3& g : d.ghosts) {
+            glBegin(GL_LINE_LOOP);
+            for (int k = 0; k < 48; ++k) {
+                const double a = 2 * kPi * k / 48;
+                const Vec3 p = g + gr * (std::cos(a) * right_ + std::sin(a) * up_);
+                glVertex3d(p.x(), p.y(), p.z());
+            }
+            glEnd();
+        }
+        glLineWidth(1.0f);
+        glDisable(GL_LINE_SMOOTH);
         glDisable(GL_BLEND);
+        glEnable(GL_DEPTH_TEST);
         glDisable(GL_LIGHTING);
         return;
     }
@@ -371,13 +412,16 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
         for (int i = 0; i < n; ++i) glVertex3d(d.x(0, i), d.x(1, i), d.x(2, i));
         glEnd();
     }
+    glDisable(GL_BLEND);
+    glDisable(GL_POINT_SMOOTH);
     if (opt.pinned && d.w.size() == n) {
-        glPointSize(9.0f);
-        glColor3f(0.85f, 0.10f, 0.10f);
-        glBegin(GL_POINTS);
-        for (int i = 0; i < n; ++i)
-            if (d.w[i] == 0) glVertex3d(d.x(0, i), d.x(1, i), d.x(2, i));
-        glEnd();
+        // Pinned particles of a cloth: small red spheres.
+        glEnable(GL_LIGHTING);
+        setMaterial(GL_FRONT_AND_BACK, {0.85f, 0.12f, 0.10f}, 0.5f, 50);
+        int drawn = 0;
+        for (int i = 0; i < n && drawn < 2000; ++i)
+            if (d.w[i] == 0) drawSphere(d.x.col(i), 0.02 * scale, 16, 8), ++drawn;
+        glDisable(GL_LIGHTING);
     }
     glDisable(GL_BLEND);
     glDisable(GL_POINT_SMOOTH);

@@ -5,6 +5,7 @@
 /// creates the GL context and the ImGui frame and calls App::frame() once per frame.
 #pragma once
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -32,8 +33,12 @@ std::vector<StageInfo> parseStageCode(const std::string& spec);
 struct AppOptions {
     std::string scene;        ///< scene file to open ("" = the first one in scenes_dir)
     std::string scenes_dir;   ///< folder the scene picker lists (*.json)
+    std::vector<std::string> sets;  ///< "key=value" overrides applied to `scene` (as `--set` of `./lab run`)
     bool play = true;         ///< start running
     int edges = -1;           ///< spring/constraint overlay: -1 by scene (on for springs and chains), 0 off, 1 on
+    bool strain = false;      ///< colour the overlay by strain instead of by type
+    /// Builds the simulation of a scene (default: makeSimulation); tests put a stand-in here.
+    std::function<std::unique_ptr<Simulation>(const Scene&)> factory;
     int wave_grid = 0;        ///< > 0: benchmark mode, show an n x n cloth moved by a travelling wave instead of a simulation
 };
 
@@ -113,6 +118,9 @@ private:
     double last_step_ms_ = 0.0;          ///< wall time of the last step, ms
     std::vector<StageInfo> stages_;      ///< stages of this build
     double wave_t_ = 0.0;                ///< time of the benchmark wave, s
+    bool save_view_ = false;             ///< "Save PNG" pressed: write the 3-D view on the next frame
+    int saved_ = 0;                      ///< pictures saved so far
+    std::string status_;                 ///< last non-error note (e.g. "saved clothlab_view_1.png")
 };
 
 }  // namespace clothlab

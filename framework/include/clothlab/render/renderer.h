@@ -50,6 +50,8 @@ private:
     std::vector<float> buf_;      ///< scratch vertex data
     std::vector<float> nrm_;      ///< scratch normals
     std::vector<unsigned> idx_;   ///< scratch indices
+    Vec3 right_{1, 0, 0};         ///< camera right axis (for markers facing the camera)
+    Vec3 up_{0, 1, 0};            ///< camera up axis
 };
 
 /// RGB colour (components in [0, 1]) of an edge kind in the overlay.
