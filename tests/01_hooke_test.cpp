@@ -7,6 +7,7 @@
 
 #include "clothlab/exercise/01_hooke.h"
 #include "clothlab/sim/rk4.h"
+#include "test_util.h"
 
 using namespace clothlab;
 
@@ -14,11 +15,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
+using testing_util::str;
 
 // ---- A harmonic oscillator with a known solution, for the integrator tests ----------------
 // One particle of mass m pulled towards the origin by F = -k x (no springs, no gravity).

@@ -14,16 +14,13 @@
 #include "clothlab/core/grid.h"
 #include "clothlab/exercise/01_hooke.h"
 #include "clothlab/exercise/02_mfn.h"
+#include "test_util.h"
 
 using namespace clothlab;
 
 namespace {
 
-std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
+using testing_util::str;
 
 // Positions of a vertical nx x ny grid, width x height metres, particle (c, r) at (c dx, -r dy, 0).
 Matrix3X gridPositions(int nx, int ny, double width, double height) {

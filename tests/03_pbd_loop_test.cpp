@@ -12,16 +12,13 @@
 #include <Eigen/Dense>
 
 #include "clothlab/exercise/03_pbd_loop.h"
+#include "test_util.h"
 
 using namespace clothlab;
 
 namespace {
 
-std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
+using testing_util::str;
 
 const Vec3 kG(0.0, -9.81, 0.0);
 

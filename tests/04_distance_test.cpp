@@ -7,16 +7,13 @@
 #include <gtest/gtest.h>
 
 #include "clothlab/exercise/04_distance.h"
+#include "test_util.h"
 
 using namespace clothlab;
 
 namespace {
 
-std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
+using testing_util::str;
 
 // The cost function written independently: C = |p1 - p2| - d.
 double C(const Vec3& p1, const Vec3& p2, double d) { return std::sqrt((p1 - p2).dot(p1 - p2)) - d; }

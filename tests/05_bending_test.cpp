@@ -9,6 +9,7 @@
 
 #include "clothlab/core/grid.h"
 #include "clothlab/exercise/05_bending.h"
+#include "test_util.h"
 
 using namespace clothlab;
 
@@ -16,11 +17,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
+using testing_util::str;
 
 // d = n1.n2 with n1 the normal of (p1, p2, p3) and n2 the normal of (p1, p2, p4), written independently.
 double dOf(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {

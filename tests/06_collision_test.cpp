@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "clothlab/exercise/06_collision.h"
+#include "test_util.h"
 
 using namespace clothlab;
 
@@ -18,11 +19,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 const Vec3 kG(0.0, -9.81, 0.0);
 
-std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
+using testing_util::str;
 
 Collider plane(const Vec3& point, const Vec3& normal, double mu = 0.0, double e = 0.0) {
     Collider c;
