@@ -17,9 +17,10 @@ target_link_libraries(clothlab_headers INTERFACE Eigen3::Eigen)
 
 # Inlining the stage code into the framework's loops (the PBD solver calls a constraint projection
 # per constraint, ~10^5 times per step): stage objects and the solver are compiled with GCC's
-# link-time optimisation as "fat" objects (normal machine code plus the compiler's IR). Programs
-# that call clothlab_inline_stages() are linked with -flto, so the calls are inlined there; all other
-# programs (the test binaries) link the normal code as before. Off: -DCLOTHLAB_LTO=OFF.
+# link-time optimisation as "fat" objects (normal machine code plus the compiler's IR), so the
+# calls are inlined at link time. GCC takes -flto from the objects for every program that links
+# them; clothlab_inline_stages() says so explicitly for the programs where speed matters (the app,
+# the benchmarks). Results do not change (docs/pbd.md, Performance). Off: -DCLOTHLAB_LTO=OFF.
 option(CLOTHLAB_LTO "link-time inlining of the stage code into the solver (GCC)" ON)
 set(CLOTHLAB_LTO_FLAGS "")
 if(CLOTHLAB_LTO AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
