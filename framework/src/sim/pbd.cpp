@@ -11,6 +11,25 @@
 
 namespace clothlab {
 
+void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p) {
+    for (const DistanceLink& L : links) {
+        const DistanceCorrection c = projectDistanceConstraint(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, k);
+        p.col(L.i) += c.dp1;
+        p.col(L.j) += c.dp2;
+    }
+}
+
+void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p) {
+    for (const BendingStencil& s : stencils) {
+        const BendingCorrection c = projectBendingConstraint(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4),
+                                                             w[s.i1], w[s.i2], w[s.i3], w[s.i4], s.phi0, k);
+        p.col(s.i1) += c.dp1;
+        p.col(s.i2) += c.dp2;
+        p.col(s.i3) += c.dp3;
+        p.col(s.i4) += c.dp4;
+    }
+}
+
 PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
     const SolverSpec& sv = scene.solver;
     xpbd_ = sv.method == "xpbd";
@@ -115,33 +134,23 @@ void PbdSimulation::projectAll(Matrix3X& p) {
     const double inv2 = 1.0 / (subDt_ * subDt_);
     if (distancePass_ >= 0)
         timed(distancePass_, [&] {
-            const size_t n = links_.size();
-            if (xpbd_) {
-                const double at = scene_.constraints.distance.compliance * inv2;
-                for (size_t k = 0; k < n; ++k) {
-                    const DistanceLink& L = links_[k];
-                    const auto c = projectDistanceXpbd(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, at, linkLambda_[k]);
-                    p.col(L.i) += c.dp1;
-                    p.col(L.j) += c.dp2;
-                }
-            } else {
-                for (size_t k = 0; k < n; ++k) {
-                    const DistanceLink& L = links_[k];
-                    const auto c = projectDistanceConstraint(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, kDistance_);
-                    p.col(L.i) += c.dp1;
-                    p.col(L.j) += c.dp2;
-                }
+            if (!xpbd_) return projectDistanceSweep(links_, w, kDistance_, p);
+            const double at = scene_.constraints.distance.compliance * inv2;
+            for (size_t k = 0; k < links_.size(); ++k) {
+                const DistanceLink& L = links_[k];
+                const auto c = projectDistanceXpbd(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, at, linkLambda_[k]);
+                p.col(L.i) += c.dp1;
+                p.col(L.j) += c.dp2;
             }
         });
     if (bendingPass_ >= 0)
         timed(bendingPass_, [&] {
+            if (!xpbd_) return projectBendingSweep(stencils_, w, kBending_, p);
             const double at = scene_.constraints.bending.compliance * inv2;
             for (size_t k = 0; k < stencils_.size(); ++k) {
                 const BendingStencil& s = stencils_[k];
-                const auto c = xpbd_ ? projectBendingXpbd(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1],
-                                                          w[s.i2], w[s.i3], w[s.i4], s.phi0, at, bendLambda_[k])
-                                     : projectBendingConstraint(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4),
-                                                                w[s.i1], w[s.i2], w[s.i3], w[s.i4], s.phi0, kBending_);
+                const auto c = projectBendingXpbd(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1], w[s.i2],
+                                                  w[s.i3], w[s.i4], s.phi0, at, bendLambda_[k]);
                 p.col(s.i1) += c.dp1;
                 p.col(s.i2) += c.dp2;
                 p.col(s.i3) += c.dp3;

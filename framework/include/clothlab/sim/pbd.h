@@ -23,6 +23,23 @@ struct DistanceLink {
     double d = 0.0;   ///< rest length, m
 };
 
+/// One Gauss–Seidel sweep of the PBD solver over its distance constraints (lines (9)–(10) for
+/// one iteration): for every link in the given order, p_i += Δp1, p_j += Δp2 with the corrections of
+/// projectDistanceConstraint() (exercise 4.3, the student's or the reference code).
+/// @param links  the constraints, in the order they are projected (the solver uses colourOrder())
+/// @param w      inverse masses, length N, 1/kg
+/// @param k      per-iteration stiffness k' in [0, 1]
+/// @param p      predicted positions, 3 x N, m (updated in place)
+void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p);
+
+/// One Gauss–Seidel sweep over the bending stencils: for every stencil in the given order,
+/// p_i += Δp_i (i = 1..4) with the corrections of projectBendingConstraint() (exercise 5.2).
+/// @param stencils  the constraints with their rest angles φ0, in the order they are projected
+/// @param w         inverse masses, length N, 1/kg
+/// @param k         per-iteration stiffness k' in [0, 1]
+/// @param p         predicted positions, 3 x N, m (updated in place)
+void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p);
+
 /// PBD or XPBD (solver.method "pbd" or "xpbd") on a cloth scene.
 class PbdSimulation : public Simulation {
 public:
