@@ -263,14 +263,24 @@ void printPositionBasedTable(std::ostream& out, const PrecisionResult& r) {
         std::snprintf(buf, sizeof buf, "  %-18s %6.2f\n", m.c_str(), r.slopes.at(m));
         out << buf;
     }
-    // Equal cost: at every budget, which series has the smallest position error.
-    std::map<double, const PrecisionRun*> best;
+    // Equal cost: at every budget, which series has the smallest position error (ties: all of them,
+    // e.g. PBD with k = 1 and XPBD with α = 0 compute the same thing).
+    std::map<double, std::vector<const PrecisionRun*>> atCost;
     for (const PrecisionRun& p : r.runs)
-        if (p.projections > 0.0 && !p.unstable && (!best.count(p.projections) || p.error < best[p.projections]->error)) best[p.projections] = &p;
+        if (p.projections > 0.0 && !p.unstable) atCost[p.projections].push_back(&p);
     out << "smallest error at equal cost:\n";
-    for (const auto& [cost, p] : best) {
-        std::snprintf(buf, sizeof buf, "  %14.4g projections/s: %-18s (%d iterations x %d substeps) %.3e m\n", cost, p->series.c_str(),
-                      p->iterations, p->substeps, p->error);
+    for (const auto& [cost, runs] : atCost) {
+        double best = runs.front()->error;
+        for (const PrecisionRun* p : runs) best = std::min(best, p->error);
+        std::string names;
+        int iterations = 0, substeps = 0;
+        for (const PrecisionRun* p : runs)
+            if (p->error <= best * (1.0 + 1e-9)) {
+                names += (names.empty() ? "" : " = ") + p->series;
+                iterations = p->iterations, substeps = p->substeps;
+            }
+        std::snprintf(buf, sizeof buf, "  %12.4g projections/s: %.3e m  %s (%d iteration(s) x %d substep(s))\n", cost, best, names.c_str(),
+                      iterations, substeps);
         out << buf;
     }
 }

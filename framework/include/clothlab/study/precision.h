@@ -27,7 +27,7 @@ struct PrecisionOptions {
     double dt_max = 1e-2;       ///< largest time step, s
     int dt_count = 7;           ///< time steps, log-spaced; each is rounded so that end_time / dt is a whole number
     double end_time = 1.0;      ///< simulated time T at which the error is measured, s
-    std::string reference_method = "rk4";  ///< reference run when there is no analytic solution
+    std::string reference_method = "rk4";  ///< reference run when there is no analytic solution ("xpbd" for pbd/xpbd scenes)
     double reference_dt = 0.0;  ///< its time step, s (0: dt_min / 8)
     /// Position-based methods: the budgets b (iterations or substeps per frame) of the sweep.
     std::vector<int> budgets = {1, 2, 5, 10, 20, 50, 100};
