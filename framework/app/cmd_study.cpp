@@ -224,7 +224,8 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         else
             std::cout << "precision study of " << scene.file << ": " << o.methods.size() << " methods x " << o.dt_count << " dt in [" << o.dt_min
                       << ", " << o.dt_max << "] s, error at T = " << o.end_time << " s\n";
-        const PrecisionResult r = precisionStudy(scene, o);
+        PrecisionResult r = precisionStudy(scene, o);
+        for (const std::string& set : po->sets) r.scene += " --set " + set;  // tables and plot titles name the overrides
         printPrecisionTable(std::cout, r);
         writePrecisionCsv(out + "/precision.csv", r);
         std::cout << "wrote " << out << "/precision.csv\n";

@@ -331,14 +331,22 @@ std::vector<std::string> plotPositionBased(const std::string& dir, const Precisi
         }
         return s.str() + "\n";
     };
+    // Right panel: the strain, with the reference's strain as a horizontal line.
+    std::string strainPlot = "plot " + lines("4", "5");
+    if (std::isfinite(r.reference_strain) && r.reference_strain > 0.0) {
+        std::ostringstream ref;
+        ref << std::setprecision(6) << r.reference_strain;
+        strainPlot.pop_back();
+        strainPlot += ", \\\n     " + ref.str() + " with lines dt 3 lw 1.5 lc 'black' title 'reference'\n";
+    }
     std::ostringstream s;
     s << "cd '" << dir << "'\nset terminal pngcairo size 1000,430 font ',10'\nset output 'precision.png'\n"
       << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid\nset key bottom left font ',9' noenhanced\n"
       << "set multiplot layout 1,2 title 'work-precision at T = " << r.end_time << " s: " << r.scene << "; reference: " << r.reference
       << "' noenhanced\n"
       << "set xlabel 'constraint projections per simulated second'\nset ylabel 'position error RMS |x - x_{ref}| [m]'\n"
-      << "plot " << lines("4", "2") << "set ylabel 'RMS edge strain'\n"
-      << "plot " << lines("4", "5") << "unset multiplot\n";
+      << "plot " << lines("4", "2") << "set ylabel 'RMS edge strain'\n" << strainPlot;
+    s << "unset multiplot\n";
     if (runGnuplot(dir + "/precision.gp", s.str())) written.push_back(dir + "/precision.png");
     std::ostringstream w;
     w << "cd '" << dir << "'\nset terminal pngcairo size 720,520 font ',10'\nset output 'precision_wall.png'\n"

@@ -4,7 +4,7 @@
 /// Force-based methods sweep the time step Δt. Position-based methods ("pbd", "xpbd") keep the
 /// scene's frame step Δt and sweep the solver budget instead: `iterations` = b with one substep, or
 /// `substeps` = b with one iteration, for every b in PrecisionOptions::budgets. Their cost axis is the
-/// number of constraint projections per simulated second, (#constraints) · iterations · substeps / Δt,
+/// number of constraint projections per simulated second, (number of constraints) · iterations · substeps / Δt,
 /// so a run with b iterations and a run with b substeps cost the same number of projections.
 #pragma once
 #include <functional>
