@@ -342,8 +342,8 @@ std::vector<std::string> plotPositionBased(const std::string& dir, const Precisi
     std::ostringstream s;
     s << "cd '" << dir << "'\nset terminal pngcairo size 1000,430 font ',10'\nset output 'precision.png'\n"
       << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid\nset key bottom left font ',9' noenhanced\n"
-      << "set multiplot layout 1,2 title 'work-precision at T = " << r.end_time << " s: " << r.scene << "; reference: " << r.reference
-      << "' noenhanced\n"
+      << "set multiplot layout 1,2 title \"work-precision at T = " << r.end_time << " s: " << r.scene << "\\nreference: " << r.reference
+      << "\" noenhanced\n"  // double quotes: gnuplot reads \n as a line break
       << "set xlabel 'constraint projections per simulated second'\nset ylabel 'position error RMS |x - x_{ref}| [m]'\n"
       << "plot " << lines("4", "2") << "set ylabel 'RMS edge strain'\n" << strainPlot;
     s << "unset multiplot\n";
