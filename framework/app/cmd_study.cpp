@@ -56,6 +56,48 @@ std::string defaultOut(const std::string& scene, const std::string& kind) {
     return "out/study/" + std::filesystem::path(scene).stem().string() + "-" + kind;
 }
 
+/// Comma-separated words, blanks dropped.
+std::vector<std::string> splitWords(const std::string& list) {
+    std::vector<std::string> out;
+    std::string cur;
+    for (char c : list + ",") {
+        if (c == ',') {
+            if (!cur.empty()) out.push_back(cur);
+            cur.clear();
+        } else if (c != ' ') {
+            cur += c;
+        }
+    }
+    return out;
+}
+
+/// Comma-separated positive integers (the budgets of a position-based sweep).
+std::vector<int> splitInts(const std::string& list, const char* name) {
+    std::vector<int> out;
+    std::string cur;
+    for (char c : list + ",") {
+        if (c == ',') {
+            if (!cur.empty()) {
+                size_t used = 0;
+                int v = 0;
+                try {
+                    v = std::stoi(cur, &used);
+                } catch (const std::exception&) {
+                    used = 0;
+                }
+                if (used != cur.size() || v < 1 || v > 100000)
+                    throw InputError("command line", name, "\"" + cur + "\" is not a whole number in [1, 100000]");
+                out.push_back(v);
+            }
+            cur.clear();
+        } else if (c != ' ') {
+            cur += c;
+        }
+    }
+    if (out.empty()) throw InputError("command line", name, "no value given");
+    return out;
+}
+
 void checkRange(const char* name, double lo, double hi, int count) {
     if (!(lo > 0.0) || !(hi >= lo)) throw InputError("command line", name, "needs 0 < min <= max");
     if (count < 1 || count > 1000) throw InputError("command line", name, "count must be between 1 and 1000");
@@ -65,7 +107,7 @@ void checkRange(const char* name, double lo, double hi, int count) {
 
 void addStudyCommand(CLI::App& app, int& exit_code) {
     (void)exit_code;
-    CLI::App* study = app.add_subcommand("study", "Stability maps and error-vs-run-time studies of the force-based methods");
+    CLI::App* study = app.add_subcommand("study", "Stability maps and error-vs-run-time studies (force-based: dt sweeps; pbd/xpbd: iterations and substeps)");
     study->require_subcommand(1);
 
     // ---- study stability ----------------------------------------------------------------------
@@ -127,41 +169,63 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
 
     // ---- study precision ----------------------------------------------------------------------
     struct PrecisionCli {
-        std::string scene, out, methods, reference_method = "rk4";
+        std::string scene, out, methods, reference_method, budgets = "1,2,5,10,20,50,100", sweeps = "iterations,substeps";
         std::vector<std::string> sets;
         double dt_min = NAN, dt_max = NAN, end_time = 1.0, reference_dt = 0;
-        int dt_count = 7;
+        int dt_count = 7, reference_substeps = 1000, reference_iterations = 1;
     };
     auto po = std::make_shared<PrecisionCli>();
     CLI::App* pr = study->add_subcommand("precision", "Error at a fixed end time against wall time per method and dt; CSV, PNG, table");
     pr->add_option("scene", po->scene, "Scene file (JSON)")->required();
     pr->add_option("--set", po->sets, "Override a scene field (repeatable)");
-    pr->add_option("--methods", po->methods, "Comma-separated methods (default: all force-based)");
+    pr->add_option("--methods", po->methods, "Comma-separated methods (default: all force-based; pbd,xpbd for a pbd/xpbd scene)");
     pr->add_option("--dt-min", po->dt_min, "Smallest time step, s (default: scene dt / 10)");
     pr->add_option("--dt-max", po->dt_max, "Largest time step, s (default: scene dt * 10)");
     pr->add_option("--dt-count", po->dt_count, "Number of time steps (log-spaced)");
     pr->add_option("--end-time", po->end_time, "Simulated time T at which the error is measured, s")->check(CLI::PositiveNumber);
-    pr->add_option("--reference-method", po->reference_method, "Method of the reference run (no analytic solution)");
+    pr->add_option("--reference-method", po->reference_method, "Method of the reference run (no analytic solution; default rk4, xpbd for a pbd/xpbd scene)");
     pr->add_option("--reference-dt", po->reference_dt, "Time step of the reference run, s (default: dt-min / 8)");
+    pr->add_option("--budgets", po->budgets, "pbd/xpbd: comma-separated iterations or substeps per frame to sweep");
+    pr->add_option("--sweeps", po->sweeps, "pbd/xpbd: what the budget sets: iterations, substeps or both (comma-separated)");
+    pr->add_option("--reference-substeps", po->reference_substeps, "pbd/xpbd reference: substeps per frame")->check(CLI::Range(1, 1000000));
+    pr->add_option("--reference-iterations", po->reference_iterations, "pbd/xpbd reference: iterations per substep")->check(CLI::Range(1, 10000));
     pr->add_option("--out", po->out, "Output folder (default: out/study/<scene>-precision)");
     pr->callback([po] {
         const Scene scene = loadScene(po->scene, po->sets);
         PrecisionOptions o;
+        const bool positionBased = isPositionBased(scene.solver.method);
+        if (positionBased) o.methods = {"pbd", "xpbd"};
         if (!po->methods.empty()) o.methods = splitMethods(po->methods);
+        o.budgets = splitInts(po->budgets, "--budgets");
+        o.sweeps.clear();
+        for (const std::string& sw : splitWords(po->sweeps)) {
+            if (sw != "iterations" && sw != "substeps") throw InputError("command line", "--sweeps", "unknown sweep \"" + sw + "\" (iterations or substeps)");
+            o.sweeps.push_back(sw);
+        }
+        if (o.sweeps.empty()) throw InputError("command line", "--sweeps", "no sweep given");
+        o.reference_substeps = po->reference_substeps;
+        o.reference_iterations = po->reference_iterations;
         o.dt_min = !std::isnan(po->dt_min) ? po->dt_min : scene.solver.dt / 10;
         o.dt_max = !std::isnan(po->dt_max) ? po->dt_max : scene.solver.dt * 10;
         o.dt_count = po->dt_count;
         checkRange("--dt-min/--dt-max/--dt-count", o.dt_min, o.dt_max, o.dt_count);
         if (o.dt_max > po->end_time) throw InputError("command line", "--dt-max", "must not exceed --end-time");
+        if (scene.solver.dt > po->end_time) throw InputError("command line", "--end-time", "must not be shorter than the scene's solver.dt");
         o.end_time = po->end_time;
-        o.reference_method = splitMethods(po->reference_method).front();
+        o.reference_method = splitMethods(!po->reference_method.empty() ? po->reference_method : positionBased ? "xpbd" : "rk4").front();
         o.reference_dt = po->reference_dt;
         o.progress = progressPrinter("precision");
         const std::string out = po->out.empty() ? defaultOut(po->scene, "precision") : po->out;
         std::filesystem::create_directories(out);
-        std::cout << "precision study of " << scene.file << ": " << o.methods.size() << " methods x " << o.dt_count << " dt in [" << o.dt_min
-                  << ", " << o.dt_max << "] s, error at T = " << o.end_time << " s\n";
-        const PrecisionResult r = precisionStudy(scene, o);
+        if (positionBased)
+            std::cout << "precision study of " << scene.file << ": " << o.methods.size() << " methods x " << o.sweeps.size() << " sweeps x "
+                      << o.budgets.size() << " budgets (" << po->budgets << ") at frame dt = " << scene.solver.dt << " s, error at T = " << o.end_time
+                      << " s\n";
+        else
+            std::cout << "precision study of " << scene.file << ": " << o.methods.size() << " methods x " << o.dt_count << " dt in [" << o.dt_min
+                      << ", " << o.dt_max << "] s, error at T = " << o.end_time << " s\n";
+        PrecisionResult r = precisionStudy(scene, o);
+        for (const std::string& set : po->sets) r.scene += " --set " + set;  // tables and plot titles name the overrides
         printPrecisionTable(std::cout, r);
         writePrecisionCsv(out + "/precision.csv", r);
         std::cout << "wrote " << out << "/precision.csv\n";

@@ -67,6 +67,12 @@ if "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 
 # Without gnuplot on the PATH: a clear note, the CSV all the same, exit 0.
 if env PATH=/nonexistent "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/np" >"$tmp/out" 2>"$tmp/err" \
      && grep -q "gnuplot not found" "$tmp/err" && [[ -s $tmp/np/precision.csv && ! -e $tmp/np/precision.png ]]; then ok; else bad "study without gnuplot: $(cat "$tmp/err")"; fi
+# Position-based scene: iterations and substeps at equal projections against an XPBD reference.
+if "$exe" study precision "$root/scenes/pbd_hanging.json" --set cloth.nx=5 --set cloth.ny=5 --methods pbd --budgets 1,4 --end-time 0.1 \
+     --reference-substeps 16 --out "$tmp/pp" >"$tmp/out" 2>&1 && grep -q "smallest error at equal cost" "$tmp/out" \
+     && grep -q "reference: xpbd with 16 substeps" "$tmp/out" && [[ $(wc -l <"$tmp/pp/precision.csv") -eq 5 ]]; then ok; else bad "study precision pbd: $(tail -3 "$tmp/out")"; fi
+"$exe" study precision "$root/scenes/pbd_hanging.json" --budgets 1,x >"$tmp/out" 2>"$tmp/err"
+if [[ $? -eq 1 ]] && grep -q "^error: command line: --budgets" "$tmp/err"; then ok; else bad "study bad budgets: $(cat "$tmp/err")"; fi
 "$exe" study precision "$root/scenes/spring.json" --dt-min -1 >"$tmp/out" 2>"$tmp/err"
 if [[ $? -eq 1 ]] && grep -q "^error: command line: --dt-min" "$tmp/err"; then ok; else bad "study bad range: $(cat "$tmp/err")"; fi
 

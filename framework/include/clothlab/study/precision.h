@@ -1,7 +1,14 @@
 /// @file precision.h
 /// @brief `clothlab study precision`: error against run time (work-precision) and convergence order.
+///
+/// Force-based methods sweep the time step Δt. Position-based methods ("pbd", "xpbd") keep the
+/// scene's frame step Δt and sweep the solver budget instead: `iterations` = b with one substep, or
+/// `substeps` = b with one iteration, for every b in PrecisionOptions::budgets. Their cost axis is the
+/// number of constraint projections per simulated second, (number of constraints) · iterations · substeps / Δt,
+/// so a run with b iterations and a run with b substeps cost the same number of projections.
 #pragma once
 #include <functional>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <string>
@@ -20,9 +27,17 @@ struct PrecisionOptions {
     double dt_max = 1e-2;       ///< largest time step, s
     int dt_count = 7;           ///< time steps, log-spaced; each is rounded so that end_time / dt is a whole number
     double end_time = 1.0;      ///< simulated time T at which the error is measured, s
-    std::string reference_method = "rk4";  ///< reference run when there is no analytic solution
+    std::string reference_method = "rk4";  ///< reference run when there is no analytic solution ("xpbd" for pbd/xpbd scenes)
     double reference_dt = 0.0;  ///< its time step, s (0: dt_min / 8)
-    /// Called after each run with (runs done, runs in total, the run's method); may be empty.
+    /// Position-based methods: the budgets b (iterations or substeps per frame) of the sweep.
+    std::vector<int> budgets = {1, 2, 5, 10, 20, 50, 100};
+    /// Position-based methods: which knobs to sweep, "iterations" and/or "substeps".
+    std::vector<std::string> sweeps = {"iterations", "substeps"};
+    /// Position-based reference: substeps per frame (each with reference_iterations iterations).
+    int reference_substeps = 1000;
+    /// Position-based reference: iterations per substep.
+    int reference_iterations = 1;
+    /// Called after each run with (runs done, runs in total, the run's label); may be empty.
     std::function<void(int, int, const std::string&)> progress;
 };
 
@@ -34,6 +49,11 @@ struct PrecisionRun {
     double error = 0.0;     ///< RMS over particles of |x_i(T) − x_i^ref(T)|, m (NaN if unstable)
     double wall = 0.0;      ///< wall time of the steps, s (short runs: the best of up to 5 repeats)
     bool unstable = false;  ///< the run blew up (no error value)
+    std::string series;     ///< the line it belongs to: the method, or "<method> iterations|substeps" (position-based)
+    int iterations = 0;     ///< position-based: iterations per substep (0 for force-based runs)
+    int substeps = 0;       ///< position-based: substeps per frame (0 for force-based runs)
+    double projections = 0.0;  ///< position-based: constraint projections per simulated second, 1/s
+    double strain = std::numeric_limits<double>::quiet_NaN();  ///< RMS edge strain at T (metric rms_strain), 1; NaN if the model has none
 };
 
 /// A whole study.
@@ -42,11 +62,32 @@ struct PrecisionResult {
     std::string reference;          ///< "analytic" or "<method> at dt = ..."
     double end_time = 0.0;          ///< T, s
     std::vector<PrecisionRun> runs; ///< every run
-    std::map<std::string, double> slopes;  ///< measured order per method (NaN if fewer than 2 usable runs)
+    /// Per series: the measured order (force-based: slope of log error over log Δt) or, for a
+    /// position-based series, the slope of log error over log projections per second (NaN if fewer than 2 usable runs).
+    std::map<std::string, double> slopes;
+    double reference_change = 0.0;  ///< position-based: RMS |x_ref − x_ref(half the substeps)|, m: the size of the reference's own error
+    double reference_strain = std::numeric_limits<double>::quiet_NaN();  ///< RMS edge strain of the reference at T
+    bool position_based = false;    ///< some run is position-based (cost axis = projections per second)
 };
 
+/// True for the position-based methods "pbd" and "xpbd".
+bool isPositionBased(const std::string& method);
+
+/// The scene of one position-based run: `method` with `iterations` per substep and `substeps` per
+/// frame at the scene's frame step Δt. PBD's stiffnesses k ∈ [0, 1] and the damping k_damping act once
+/// per (sub)step, so they are converted to k_sub = 1 − (1 − k)^(1/substeps): (1 − k_sub)^substeps = 1 − k,
+/// i.e. the same effect per frame, and every configuration simulates the same cloth (k = 1 stays 1;
+/// XPBD's compliances α are material constants and stay).
+/// @param scene       the base scene (model "cloth")
+/// @param method      "pbd" or "xpbd"
+/// @param iterations  iterations per substep, >= 1
+/// @param substeps    substeps per frame, >= 1
+Scene positionBasedScene(const Scene& scene, const std::string& method, int iterations, int substeps);
+
 /// The reference positions at time T: the analytic solution for the single-spring scene when it has
-/// one (singleSpringAnalytic()), else a run of `reference_method` at `reference_dt`.
+/// one (singleSpringAnalytic()), else a run of `reference_method` at `reference_dt`; for a
+/// position-based reference method, `reference_method` with `reference_substeps` substeps of
+/// `reference_iterations` iterations per frame (positionBasedScene()).
 /// @param scene     the scene
 /// @param options   end time and reference settings
 /// @param label     set to "analytic" or "<method> at dt = <dt> s"
@@ -65,7 +106,14 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& optio
 /// @param method  the method
 double convergenceSlope(const std::vector<PrecisionRun>& runs, const std::string& method);
 
-/// Writes the runs as CSV: `method,dt,steps,error,wall,unstable`.
+/// The work-precision slope of one position-based series: the least-squares slope of log(error) over
+/// log(projections per second) of its stable runs with error above 10⁻¹³ m; NaN if fewer than two.
+/// Slope −1: ten times the cost buys ten times less error; 0: more cost buys nothing.
+/// @param runs    the runs (other series are ignored)
+/// @param series  the series, e.g. "pbd substeps"
+double costSlope(const std::vector<PrecisionRun>& runs, const std::string& series);
+
+/// Writes the runs as CSV: `method,dt,steps,error,wall,unstable,series,iterations,substeps,projections_per_s,rms_strain`.
 /// @throws InputError if the file cannot be written
 void writePrecisionCsv(const std::string& path, const PrecisionResult& result);
 
@@ -73,7 +121,10 @@ void writePrecisionCsv(const std::string& path, const PrecisionResult& result);
 void printPrecisionTable(std::ostream& out, const PrecisionResult& result);
 
 /// Writes `precision.png` (error against wall time, log-log, one line per method: the work-precision
-/// diagram) and `convergence.png` (error against Δt with the measured slopes) with gnuplot.
+/// diagram) and `convergence.png` (error against Δt with the measured slopes) with gnuplot. With
+/// position-based runs: `precision.png` has two panels, position error and RMS edge strain against
+/// constraint projections per simulated second, one line per series, and `precision_wall.png` shows
+/// the position error against wall time.
 /// @param dir     output folder (holds the CSV already)
 /// @param result  the study
 /// @return        the PNG files written (empty if gnuplot is missing or failed; a note goes to stderr)
