@@ -268,6 +268,7 @@ void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
         for (int k = 0; k < 3; ++k) idx_.push_back(static_cast<unsigned>(t[k]));
 
     const bool textured = d.uv.cols() == n;
+    std::vector<float> uv;  // texture coordinates, alive until the draw call
     if (textured) {
         if (texture_ == 0) {
             // A two-tone checker (8 x 8 squares) that makes stretching and folds visible.
@@ -287,36 +288,28 @@ void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
             glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, S, S, 0, GL_RGB, GL_UNSIGNED_BYTE, tex.data());
         }
-        std::vector<float> uv(2 * static_cast<size_t>(n));
-        for (int i = 0; i < n; ++i) uv[2 * i] = static_cast<float>(d.uv(0, i)), uv[2 * i + 1] = static_cast<float>(d.uv(1, i));
         glBindTexture(GL_TEXTURE_2D, texture_);
         glEnable(GL_TEXTURE_2D);
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        uv.resize(2 * static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) uv[2 * i] = static_cast<float>(d.uv(0, i)), uv[2 * i + 1] = static_cast<float>(d.uv(1, i));
         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
         glTexCoordPointer(2, GL_FLOAT, 0, uv.data());
-        glEnable(GL_LIGHTING);
-        setMaterial(GL_FRONT, {0.95f, 0.52f, 0.22f}, 0.25f, 24);
-        setMaterial(GL_BACK, {0.30f, 0.52f, 0.85f}, 0.15f, 24);
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(1, 1);
-        glEnableClientState(GL_VERTEX_ARRAY);
-        glEnableClientState(GL_NORMAL_ARRAY);
-        glVertexPointer(3, GL_FLOAT, 0, buf_.data());
-        glNormalPointer(GL_FLOAT, 0, nrm_.data());
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx_.size()), GL_UNSIGNED_INT, idx_.data());
+    }
+    // Two-sided lighting: warm front, cool back.
+    glEnable(GL_LIGHTING);
+    setMaterial(GL_FRONT, {0.95f, 0.52f, 0.22f}, 0.25f, 24);
+    setMaterial(GL_BACK, {0.30f, 0.52f, 0.85f}, 0.15f, 24);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1, 1);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, buf_.data());
+    glNormalPointer(GL_FLOAT, 0, nrm_.data());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx_.size()), GL_UNSIGNED_INT, idx_.data());
+    if (textured) {
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glDisable(GL_TEXTURE_2D);
-    } else {
-        glEnable(GL_LIGHTING);
-        setMaterial(GL_FRONT, {0.95f, 0.52f, 0.22f}, 0.25f, 24);
-        setMaterial(GL_BACK, {0.30f, 0.52f, 0.85f}, 0.15f, 24);
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(1, 1);
-        glEnableClientState(GL_VERTEX_ARRAY);
-        glEnableClientState(GL_NORMAL_ARRAY);
-        glVertexPointer(3, GL_FLOAT, 0, buf_.data());
-        glNormalPointer(GL_FLOAT, 0, nrm_.data());
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx_.size()), GL_UNSIGNED_INT, idx_.data());
     }
     glDisableClientState(GL_VERTEX_ARRAY);
     glDisableClientState(GL_NORMAL_ARRAY);
