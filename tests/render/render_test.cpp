@@ -241,15 +241,26 @@ TEST(Image, PngRoundTrip) {
     EXPECT_TRUE(back.width == 3 && back.height == 2 && back.rgba == img.rgba);
 }
 
+// An OSMesa context with ImGui and its OpenGL2 backend, torn down at the end of the scope.
+struct OffscreenImGui {
+    OffscreenContext ctx;
+    OffscreenImGui(int w, int h) : ctx(w, h) {
+        ImGui::CreateContext();
+        setupImGuiStyle();
+        ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
+        ImGui_ImplOpenGL2_Init();
+    }
+    ~OffscreenImGui() {
+        ImGui_ImplOpenGL2_Shutdown();
+        ImGui::DestroyContext();
+    }
+};
+
 // The app with simulated mouse input (ImGui io), offscreen: grab and drag a particle, pin and unpin it.
 TEST(App, DragAndPinAParticleWithTheMouse) {
     const int w = 900, h = 560;
-    OffscreenContext ctx(w, h);
-    ImGui::CreateContext();
-    setupImGuiStyle();
+    OffscreenImGui gui(w, h);
     ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(w, h);
-    ImGui_ImplOpenGL2_Init();
     AppOptions o;
     o.scene = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/chain.json";
     o.play = false;
@@ -288,20 +299,14 @@ TEST(App, DragAndPinAParticleWithTheMouse) {
     EXPECT_GT(app.simulation()->state().w[k], 0.0) << "a second right click should unpin it";
     app.stepOnce();
     EXPECT_TRUE(app.message().empty()) << app.message();
-    ImGui_ImplOpenGL2_Shutdown();
-    ImGui::DestroyContext();
 }
 
 // Every method on a cloth scene: the app either runs it or shows why not in the panel; it never throws,
 // and the frame still shows the cloth.
 TEST(App, EveryMethodRunsOrExplainsItself) {
     const int w = 640, h = 400;
-    OffscreenContext ctx(w, h);
-    ImGui::CreateContext();
-    setupImGuiStyle();
+    OffscreenImGui gui(w, h);
     ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(w, h);
-    ImGui_ImplOpenGL2_Init();
     const char* tmp = std::getenv("CLOTHLAB_TEST_TMP");
     for (const std::string& method : solverMethods()) {
         const std::string path = std::string(tmp ? tmp : ".") + "/cloth_" + method + ".json";
@@ -325,14 +330,12 @@ TEST(App, EveryMethodRunsOrExplainsItself) {
         }
         EXPECT_TRUE(app.simulation() != nullptr || !app.message().empty())
             << method << ": neither a simulation nor a message in the panel";
-        const Image img = ctx.read();
+        const Image img = gui.ctx.read();
         int cloth = 0;
         for (int y = 0; y < h; ++y)
             for (int x = 360; x < w; ++x) cloth += warm(img.at(x, y)) || cool(img.at(x, y));
         EXPECT_GT(cloth, 200) << method << ": the cloth should be drawn even when its method is not available";
     }
-    ImGui_ImplOpenGL2_Shutdown();
-    ImGui::DestroyContext();
 }
 
 // A stage stub hit while playing: the app pauses and shows "not implemented: exercise N.M ..." instead of crashing.
@@ -352,12 +355,8 @@ public:
 
 TEST(App, StubShowsNotImplementedInsteadOfCrashing) {
     const int w = 640, h = 400;
-    OffscreenContext ctx(w, h);
-    ImGui::CreateContext();
-    setupImGuiStyle();
+    OffscreenImGui gui(w, h);
     ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(w, h);
-    ImGui_ImplOpenGL2_Init();
     AppOptions o;
     o.scene = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/spring.json";
     o.factory = [](const Scene& s) { return std::make_unique<StubSimulation>(s); };
@@ -374,8 +373,6 @@ TEST(App, StubShowsNotImplementedInsteadOfCrashing) {
         << "the panel should name the unfinished task";
     ASSERT_NE(app.simulation(), nullptr);
     EXPECT_EQ(app.simulation()->state().t, 0.0) << "nothing should have advanced";
-    ImGui_ImplOpenGL2_Shutdown();
-    ImGui::DestroyContext();
 }
 
 // `render_test --check-app-screenshot FILE`: the app's picture has the panel on the left (light window
