@@ -13,16 +13,21 @@
 #include "clothlab/exercise/04_distance.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/sim/pbd.h"
+#if __has_include("bending_batched.h")  // solutions/kernels: the instructor copy only
+#include "bending_batched.h"
+#define CLOTHLAB_BENCH_BATCHED 1
+#endif
 
 using namespace clothlab;
 
 namespace {
 // An n x n cloth scene pinned at two corners with distance and bending constraints, 10 iterations.
-Scene clothScene(int n) {
+// Vertical, it hangs in its own plane (every stencil stays flat); horizontal, it drapes in 3D.
+Scene clothScene(int n, const std::string& bendingKernel = "exercise", const std::string& orientation = "vertical") {
     const std::string json = R"({"model": "cloth", "cloth": {"nx": )" + std::to_string(n) + R"(, "ny": )" +
-                             std::to_string(n) + R"(, "pins": ["top-left", "top-right"]},
+                             std::to_string(n) + R"(, "orientation": ")" + orientation + R"(", "pins": ["top-left", "top-right"]},
         "constraints": {"distance": {"stiffness": 1.0}, "bending": {"stiffness": 0.1}},
-        "solver": {"method": "pbd", "dt": 0.01, "iterations": 10}})";
+        "solver": {"method": "pbd", "dt": 0.01, "iterations": 10, "bending_kernel": ")" + bendingKernel + R"("}})";
     return parseScene(json, "bench", {});
 }
 
@@ -98,14 +103,35 @@ static void BM_BendingProjection(benchmark::State& st) {
 }
 BENCHMARK(BM_BendingProjection);
 
-// One full PBD step (gravity, distance + bending, 10 iterations) of an n x n cloth pinned at two corners.
-static void BM_PbdStep(benchmark::State& st) {
+#ifdef CLOTHLAB_BENCH_BATCHED
+// The same sweep (same cloth, same stencils, same order) with the batched kernel of
+// solutions/kernels (solver.bending_kernel "batched"): 16 stencils at a time in vector registers.
+static void BM_BendingProjectionBatched(benchmark::State& st) {
+    Cloth c;
+    const BendingBlocks blocks = bendingBlocks(c.stencils);
+    for (auto _ : st) {
+        projectBendingBlocks(blocks, c.w, 0.01, c.p);
+        benchmark::ClobberMemory();
+    }
+    st.counters["per_constraint"] = perConstraint(c.stencils.size(), st.iterations());
+}
+BENCHMARK(BM_BendingProjectionBatched);
+#endif
+
+// One full PBD step (gravity, distance + bending, 10 iterations) of an n x n cloth pinned at two
+// corners, held horizontally at the start so that it drapes and every stencil bends.
+static void pbdStep(benchmark::State& st, const std::string& bendingKernel) {
     const int n = static_cast<int>(st.range(0));
-    auto sim = makeSimulation(clothScene(n));
+    auto sim = makeSimulation(clothScene(n, bendingKernel, "horizontal"));
     for (auto _ : st) sim->step();
     st.counters["per_particle"] = benchmark::Counter(static_cast<double>(n) * n * st.iterations(),
                                                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
+static void BM_PbdStep(benchmark::State& st) { pbdStep(st, "exercise"); }
 BENCHMARK(BM_PbdStep)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+#ifdef CLOTHLAB_BENCH_BATCHED
+static void BM_PbdStepBatched(benchmark::State& st) { pbdStep(st, "batched"); }
+BENCHMARK(BM_PbdStepBatched)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+#endif
 
 BENCHMARK_MAIN();

@@ -321,6 +321,7 @@ Scene readScene(const json& doc, const std::string& file) {
     s.solver.iterations = sv.integer("iterations", s.solver.iterations, 0, 100000);
     s.solver.substeps = sv.integer("substeps", s.solver.substeps, 1, 100000);
     s.solver.thickness = sv.number("thickness", s.solver.thickness, 0);
+    s.solver.bendingKernel = sv.choice("bending_kernel", s.solver.bendingKernel, {"exercise", "batched"});
     const bool position_based = s.solver.method == "pbd" || s.solver.method == "xpbd";
     if (position_based && s.model != "cloth") sv.fail("method", "\"" + s.solver.method + "\" needs model \"cloth\" (got \"" + s.model + "\")");
     sv.finish();

@@ -8,6 +8,9 @@
 #include "clothlab/core/topology.h"
 #include "clothlab/exercise/04_distance.h"
 #include "clothlab/sim/xpbd.h"
+#ifdef CLOTHLAB_BATCHED_KERNELS
+#include "bending_batched.h"  // solutions/kernels: not in the student copy
+#endif
 
 namespace clothlab {
 
@@ -36,6 +39,14 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
     subDt_ = sv.dt / sv.substeps;
     if (scene.forces.damping > 1.0)
         throw InputError(scene.file, "forces.damping", "must be in [0, 1] for " + sv.method + " (k_damping of dampVelocities)");
+    const bool batched = sv.bendingKernel == "batched" && scene.constraints.bending.enabled;
+    if (batched && xpbd_)
+        throw InputError(scene.file, "solver.bending_kernel", "\"batched\" is for method \"pbd\" (use \"exercise\" with xpbd)");
+#ifndef CLOTHLAB_BATCHED_KERNELS
+    if (batched)
+        throw InputError(scene.file, "solver.bending_kernel",
+                         "\"batched\" comes with solutions/kernels/, which this copy does not have (use \"exercise\")");
+#endif
     state_ = makeGridState(scene.cloth);
     triangles_ = gridTriangles(scene.cloth.nx, scene.cloth.ny);
     edges_ = uniqueEdges(triangles_);
@@ -69,6 +80,9 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         for (int k : colourOrder(sets, state_.size())) stencils_.push_back(stencils[static_cast<size_t>(k)]);
         bendLambda_.assign(stencils_.size(), 0.0);
         if (!xpbd_) kBending_ = iterationStiffness(scene.constraints.bending.stiffness, sv.iterations);
+#ifdef CLOTHLAB_BATCHED_KERNELS
+        if (batched) blocks_ = std::make_shared<const BendingBlocks>(bendingBlocks(stencils_));
+#endif
     }
     if (!scene.colliders.empty()) {
         collisionPass_ = timer_.add("constraints: collision");
@@ -145,6 +159,9 @@ void PbdSimulation::projectAll(Matrix3X& p) {
         });
     if (bendingPass_ >= 0)
         timed(bendingPass_, [&] {
+#ifdef CLOTHLAB_BATCHED_KERNELS
+            if (blocks_) return projectBendingBlocks(*blocks_, w, kBending_, p);
+#endif
             if (!xpbd_) return projectBendingSweep(stencils_, w, kBending_, p);
             const double at = scene_.constraints.bending.compliance * inv2;
             for (size_t k = 0; k < stencils_.size(); ++k) {

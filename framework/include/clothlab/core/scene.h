@@ -110,6 +110,9 @@ struct SolverSpec {
     int iterations = 10;    ///< PBD solver iterations per step
     int substeps = 1;       ///< PBD substeps per step
     double thickness = 0.01;///< collision thickness h, m
+    /// PBD bending sweep: "exercise" calls exercise 5.2 per stencil (the student's or the reference
+    /// code); "batched" the vectorised reference kernel of solutions/kernels (instructor copy only)
+    std::string bendingKernel = "exercise";
 };
 
 /// What the run report prints.

@@ -7,6 +7,7 @@
 /// becomes a pass: a scene without colliders never calls the collision code, one without
 /// constraints.bending never calls the bending code.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "clothlab/exercise/03_pbd_loop.h"
@@ -15,6 +16,8 @@
 #include "clothlab/sim/simulation.h"
 
 namespace clothlab {
+
+struct BendingBlocks;  // solutions/kernels/bending_batched.h (instructor copy only)
 
 /// A distance constraint between particles i and j with rest length d (an edge of the cloth).
 struct DistanceLink {
@@ -44,7 +47,8 @@ void projectBendingSweep(const std::vector<BendingStencil>& stencils, const Vect
 class PbdSimulation : public Simulation {
 public:
     /// @param scene  a scene with model "cloth" and solver.method "pbd" or "xpbd"
-    /// @throws InputError for settings PBD cannot use (forces.damping > 1)
+    /// @throws InputError for settings PBD cannot use (forces.damping > 1; solver.bending_kernel
+    ///         "batched" with XPBD or in a copy without solutions/kernels)
     explicit PbdSimulation(const Scene& scene);
     void step() override;
     /// energy (kinetic + gravity), and only for what the scene uses: max_strain and rms_strain
@@ -78,6 +82,7 @@ private:
     std::vector<DistanceLink> links_;        ///< distance constraints
     std::vector<double> linkLambda_;         ///< XPBD multipliers of the links
     std::vector<BendingStencil> stencils_;   ///< bending constraints
+    std::shared_ptr<const BendingBlocks> blocks_;  ///< stencils of bending_kernel "batched" (else null)
     std::vector<double> bendLambda_;         ///< XPBD multipliers of the stencils
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step
     double kDistance_ = 1.0, kBending_ = 1.0;    ///< per-iteration PBD stiffness k'

@@ -1,0 +1,70 @@
+/// @file bending_batched.h
+/// @brief A fast bending sweep for the reference demos and benchmarks (instructor copy only).
+///
+/// The solver's default bending sweep calls exercise 5.2, projectBendingConstraint(), once per
+/// stencil. This file does the same projections, in the same order, 16 stencils at a time with the
+/// CPU's vector instructions: the solver option `solver.bending_kernel: "batched"`. It is a
+/// solved stage 05, so `./lab release` leaves it out (it lives in solutions/kernels/).
+///
+/// The formulas are those of exercise 5.2 rewritten so that a projection needs one square root
+/// and two divisions. With positions relative to p1, \f$\vec a=\vec p_2-\vec p_1\f$,
+/// \f$\vec b=\vec p_3-\vec p_1\f$, \f$\vec c=\vec p_4-\vec p_1\f$ and the unnormalised normals
+/// \f$\vec m_1=\vec a\times\vec b\f$, \f$\vec m_2=\vec a\times\vec c\f$
+/// (\f$L_1=|\vec m_1|^2\f$, \f$L_2=|\vec m_2|^2\f$, \f$D=\vec m_1\cdot\vec m_2\f$):
+/// \f[ \varphi=\arccos(\vec n_1\cdot\vec n_2)=\operatorname{atan2}(S, D),\qquad
+///     S=|\vec m_1\times\vec m_2|=|\vec a\cdot(\vec b\times\vec c)|\,|\vec a| \f]
+/// and with \f$\vec E_1=L_1\vec m_2-D\,\vec m_1\f$, \f$\vec E_2=L_2\vec m_1-D\,\vec m_2\f$ the
+/// q-vectors of exercise 5.1 are \f$\vec q_i=\vec Q_i/(L_1L_2)^{3/2}\f$ with
+/// \f[ \vec Q_3=L_2\,\vec E_1\times\vec a,\quad \vec Q_4=L_1\,\vec E_2\times\vec a,\quad
+///     \vec Q_2=L_2\,\vec b\times\vec E_1+L_1\,\vec c\times\vec E_2,\quad \vec Q_1=-\vec Q_2-\vec Q_3-\vec Q_4 \f]
+/// so that the correction of exercise 5.2 becomes
+/// \f[ \Delta\vec p_i=k\,(\varphi-\varphi_0)\,\frac{L_1L_2\,S}{\sum_j w_j|\vec Q_j|^2}\,w_i\vec Q_i. \f]
+#pragma once
+#include <vector>
+
+#include "clothlab/core/types.h"
+#include "clothlab/exercise/05_bending.h"
+
+namespace clothlab {
+
+/// The bending stencils in structure-of-arrays form, cut into blocks of stencils that share no
+/// particle (so the stencils of a block can be projected at the same time).
+struct BendingBlocks {
+    std::vector<int> i1;              ///< particle i1 of stencil s (as in BendingStencil), length S
+    std::vector<int> i2;              ///< particle i2 of stencil s, length S
+    std::vector<int> i3;              ///< particle i3 of stencil s, length S
+    std::vector<int> i4;              ///< particle i4 of stencil s, length S
+    std::vector<double> phi0;         ///< rest angle of stencil s, rad, length S
+    std::vector<int> start;           ///< block b holds stencils start[b] .. start[b+1] − 1; length B + 1
+};
+
+/// Largest number of stencils in one block (the vector loop's width: 8 doubles × 2).
+constexpr int kBendingBlockSize = 16;
+
+/// Cuts the stencils, kept in their order, into blocks: a stencil starts a new block when it shares a
+/// particle with a stencil of the current block or the block holds kBendingBlockSize stencils. In the
+/// solver's colour order (colourOrder()) almost every block is full.
+/// @param stencils  the stencils in the order the sweep projects them
+/// @return          the same stencils as blocks; projecting block by block equals projecting one by one
+BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils);
+
+/// One Gauss–Seidel sweep over the stencils, block by block: the same result as projectBendingSweep()
+/// with the reference exercise 5.2 (up to rounding), with the correction in the form of this file's
+/// header. No correction (never NaN) in the cases where exercise 5.2 gives none: a zero-area triangle
+/// (L_1 or L_2 below 1e-24 m⁴), flat or folded (\f$S^2<10^{-12}L_1L_2\f$, i.e. 1 − d² < 1e-12), all
+/// pinned (\f$\sum_j w_j|\vec q_j|^2<10^{-24}\f$).
+/// @param blocks  the stencils, from bendingBlocks()
+/// @param w       inverse masses, length N, 1/kg
+/// @param k       per-iteration stiffness k' in [0, 1]
+/// @param p       predicted positions, 3 x N, m (updated in place)
+void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p);
+
+/// The angle atan2(y, x) ∈ [0, π] for y ≥ 0 as the kernel computes it, without a library call:
+/// reduced to |t| ≤ tan(π/8) (octant and a π/4 shift, \f$\arctan u-\frac{\pi}{4}=\arctan\frac{u-1}{u+1}\f$), then
+/// \f$\arctan t=\sum_{n=0}^{19}(-1)^n\frac{t^{2n+1}}{2n+1}\f$ (truncation error below 1e-17).
+/// @param y  the sine side, y ≥ 0
+/// @param x  the cosine side
+/// @return   the angle, rad (NaN for y = x = 0)
+double atan2Upper(double y, double x);
+
+}  // namespace clothlab
