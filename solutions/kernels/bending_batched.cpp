@@ -1,13 +1,16 @@
 // The batched bending sweep (solver.bending_kernel "batched"); formulas in bending_batched.h.
 //
 // How it is made fast, for the curious (none of this is needed for the exercises):
-// - one `#pragma omp simd` loop over a block of stencils that share no particle: the compiler may
-//   then run 8 stencils at once in AVX-512 registers, loading and storing p with gather/scatter;
-// - `target_clones`: the compiler builds the sweep for plain x86-64, for AVX2 (x86-64-v3) and for
-//   AVX-512 (x86-64-v4), and the program picks the best one the CPU has when it starts;
-// - no branches in the loop body: every case is computed and the result selected (`c ? x : y` on
-//   doubles), and the angle is a polynomial instead of std::acos (a library call the loop cannot
-//   vectorise);
+// - the stencils of a block share no particle, so `#pragma omp simd` may run them side by side:
+//   8 at once in AVX-512 registers, 4 with AVX2;
+// - with AVX-512 (sweepDirect) the vector loop loads and stores p itself, with gather and scatter
+//   instructions; without (sweepStaged: AVX2 has no scatter) the vector loop writes the corrections
+//   to an array, and a plain loop adds them to p;
+// - `target_clones` builds each sweep for AVX-512 or AVX2 and for plain x86-64, and
+//   projectBendingBlocks() picks what the CPU has;
+// - no branches in bendingCorrection(): every case is computed and the result selected
+//   (`c ? x : y` on doubles), and the angle is a polynomial instead of std::acos (a library call
+//   the loop cannot vectorise);
 // - the file is compiled with -fno-math-errno (sqrt may become one instruction) and
 //   -fno-trapping-math (see framework/CMakeLists.txt); results are plain IEEE double arithmetic.
 #include "bending_batched.h"
@@ -46,19 +49,70 @@ constexpr AtanCoefficients kAtan;
     return x < 0.0 ? kPi - angle : angle;        // undo the mirror at the y axis
 }
 
+// One stencil's corrections Δp1..Δp4 of p1..p4 with inverse masses w[j1..j4] (formulas in
+// bending_batched.h), without branches so that a loop over stencils can run it in vector
+// registers. (Plain doubles in and out: GCC 12 vectorises that better than small arrays.)
+[[gnu::always_inline]] inline void bendingCorrection(
+    double p1x, double p1y, double p1z, double p2x, double p2y, double p2z,
+    double p3x, double p3y, double p3z, double p4x, double p4y, double p4z,
+    const double* w, int j1, int j2, int j3, int j4, double phi0, double k,
+    double& d1x, double& d1y, double& d1z, double& d2x, double& d2y, double& d2z,
+    double& d3x, double& d3y, double& d3z, double& d4x, double& d4y, double& d4z) {
+    // a, b, c: p2, p3, p4 relative to p1
+    const double ax = p2x - p1x, ay = p2y - p1y, az = p2z - p1z;
+    const double bx = p3x - p1x, by = p3y - p1y, bz = p3z - p1z;
+    const double cx = p4x - p1x, cy = p4y - p1y, cz = p4z - p1z;
+    // m1 = a x b, m2 = a x c
+    const double m1x = ay * bz - az * by, m1y = az * bx - ax * bz, m1z = ax * by - ay * bx;
+    const double m2x = ay * cz - az * cy, m2y = az * cx - ax * cz, m2z = ax * cy - ay * cx;
+    const double L1 = m1x * m1x + m1y * m1y + m1z * m1z;
+    const double L2 = m2x * m2x + m2y * m2y + m2z * m2z;
+    const double D = m1x * m2x + m1y * m2y + m1z * m2z;
+    // S = |m1 x m2| = |a.(b x c)| |a|
+    const double vol = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+    const double S2 = vol * vol * (ax * ax + ay * ay + az * az);
+    const double S = std::sqrt(S2);
+    const double phi = angleUpper(S, D);
+    // E1 = L1 m2 − D m1, E2 = L2 m1 − D m2
+    const double e1x = L1 * m2x - D * m1x, e1y = L1 * m2y - D * m1y, e1z = L1 * m2z - D * m1z;
+    const double e2x = L2 * m1x - D * m2x, e2y = L2 * m1y - D * m2y, e2z = L2 * m1z - D * m2z;
+    // Q3 = L2 E1 x a, Q4 = L1 E2 x a, Q2 = L2 b x E1 + L1 c x E2, Q1 = −Q2 − Q3 − Q4
+    const double q3x = L2 * (e1y * az - e1z * ay), q3y = L2 * (e1z * ax - e1x * az), q3z = L2 * (e1x * ay - e1y * ax);
+    const double q4x = L1 * (e2y * az - e2z * ay), q4y = L1 * (e2z * ax - e2x * az), q4z = L1 * (e2x * ay - e2y * ax);
+    const double q2x = L2 * (by * e1z - bz * e1y) + L1 * (cy * e2z - cz * e2y);
+    const double q2y = L2 * (bz * e1x - bx * e1z) + L1 * (cz * e2x - cx * e2z);
+    const double q2z = L2 * (bx * e1y - by * e1x) + L1 * (cx * e2y - cy * e2x);
+    const double q1x = -q2x - q3x - q4x, q1y = -q2y - q3y - q4y, q1z = -q2z - q3z - q4z;
+    const double w1 = w[j1], w2 = w[j2], w3 = w[j3], w4 = w[j4];  // loaded late: fewer live registers
+    const double Dn = w1 * (q1x * q1x + q1y * q1y + q1z * q1z) + w2 * (q2x * q2x + q2y * q2y + q2z * q2z) +
+                      w3 * (q3x * q3x + q3y * q3y + q3z * q3z) + w4 * (q4x * q4x + q4y * q4y + q4z * q4z);
+    const double LL = L1 * L2;
+    double f = k * (phi - phi0) * LL * S / Dn;
+    // The cases without a correction (as in exercise 5.2), as selects, not branches.
+    f = L1 < 1e-24 ? 0.0 : f;                 // zero-area triangle
+    f = L2 < 1e-24 ? 0.0 : f;
+    f = S2 < 1e-12 * LL ? 0.0 : f;            // flat or folded: 1 − d² < 1e-12
+    f = Dn < 1e-24 * LL * LL * LL ? 0.0 : f;  // all pinned: Σ w_j |q_j|² < 1e-24
+    const double f1 = f * w1, f2 = f * w2, f3 = f * w3, f4 = f * w4;
+    d1x = f1 * q1x, d1y = f1 * q1y, d1z = f1 * q1z;
+    d2x = f2 * q2x, d2y = f2 * q2y, d2z = f2 * q2z;
+    d3x = f3 * q3x, d3y = f3 * q3y, d3z = f3 * q3z;
+    d4x = f4 * q4x, d4y = f4 * q4y, d4z = f4 * q4z;
+}
+
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define CLOTHLAB_VECTOR_CLONES __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
-#else
-#define CLOTHLAB_VECTOR_CLONES
+#define CLOTHLAB_X86_DISPATCH 1
 #endif
 
-// The sweep on raw arrays: P is p's storage (x, y, z of particle i at P[3i], P[3i+1], P[3i+2]).
-CLOTHLAB_VECTOR_CLONES
-void sweep(const BendingBlocks& B, const double* w, double k, double* P) {
-    const int* I1 = B.i1.data();
-    const int* I2 = B.i2.data();
-    const int* I3 = B.i3.data();
-    const int* I4 = B.i4.data();
+// The sweep with AVX-512: one vector loop per block that gathers p from and scatters it back to
+// P = p's storage (x, y, z of particle i at P[3i], P[3i + 1], P[3i + 2]). `omp simd` tells the
+// compiler what it cannot prove: the stencils of a block share no particle, so the iterations do
+// not depend on each other.
+#ifdef CLOTHLAB_X86_DISPATCH
+__attribute__((target_clones("default", "arch=x86-64-v4")))
+#endif
+void sweepDirect(const BendingBlocks& B, const double* w, double k, double* P) {
+    const int *I1 = B.i1.data(), *I2 = B.i2.data(), *I3 = B.i3.data(), *I4 = B.i4.data();
     const double* phi0 = B.phi0.data();
     const int blocks = static_cast<int>(B.start.size()) - 1;
     for (int blk = 0; blk < blocks; ++blk) {
@@ -66,46 +120,45 @@ void sweep(const BendingBlocks& B, const double* w, double k, double* P) {
 #pragma omp simd
         for (int s = first; s < last; ++s) {
             const int i1 = 3 * I1[s], i2 = 3 * I2[s], i3 = 3 * I3[s], i4 = 3 * I4[s];
-            // a, b, c: p2, p3, p4 relative to p1
-            const double ax = P[i2] - P[i1], ay = P[i2 + 1] - P[i1 + 1], az = P[i2 + 2] - P[i1 + 2];
-            const double bx = P[i3] - P[i1], by = P[i3 + 1] - P[i1 + 1], bz = P[i3 + 2] - P[i1 + 2];
-            const double cx = P[i4] - P[i1], cy = P[i4 + 1] - P[i1 + 1], cz = P[i4 + 2] - P[i1 + 2];
-            // m1 = a x b, m2 = a x c
-            const double m1x = ay * bz - az * by, m1y = az * bx - ax * bz, m1z = ax * by - ay * bx;
-            const double m2x = ay * cz - az * cy, m2y = az * cx - ax * cz, m2z = ax * cy - ay * cx;
-            const double L1 = m1x * m1x + m1y * m1y + m1z * m1z;
-            const double L2 = m2x * m2x + m2y * m2y + m2z * m2z;
-            const double D = m1x * m2x + m1y * m2y + m1z * m2z;
-            // S = |m1 x m2| = |a.(b x c)| |a|
-            const double vol = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
-            const double S2 = vol * vol * (ax * ax + ay * ay + az * az);
-            const double S = std::sqrt(S2);
-            const double phi = angleUpper(S, D);
-            // E1 = L1 m2 − D m1, E2 = L2 m1 − D m2
-            const double e1x = L1 * m2x - D * m1x, e1y = L1 * m2y - D * m1y, e1z = L1 * m2z - D * m1z;
-            const double e2x = L2 * m1x - D * m2x, e2y = L2 * m1y - D * m2y, e2z = L2 * m1z - D * m2z;
-            // Q3 = L2 E1 x a, Q4 = L1 E2 x a, Q2 = L2 b x E1 + L1 c x E2, Q1 = −Q2 − Q3 − Q4
-            const double q3x = L2 * (e1y * az - e1z * ay), q3y = L2 * (e1z * ax - e1x * az), q3z = L2 * (e1x * ay - e1y * ax);
-            const double q4x = L1 * (e2y * az - e2z * ay), q4y = L1 * (e2z * ax - e2x * az), q4z = L1 * (e2x * ay - e2y * ax);
-            const double q2x = L2 * (by * e1z - bz * e1y) + L1 * (cy * e2z - cz * e2y);
-            const double q2y = L2 * (bz * e1x - bx * e1z) + L1 * (cz * e2x - cx * e2z);
-            const double q2z = L2 * (bx * e1y - by * e1x) + L1 * (cx * e2y - cy * e2x);
-            const double q1x = -q2x - q3x - q4x, q1y = -q2y - q3y - q4y, q1z = -q2z - q3z - q4z;
-            const double w1 = w[I1[s]], w2 = w[I2[s]], w3 = w[I3[s]], w4 = w[I4[s]];
-            const double Dn = w1 * (q1x * q1x + q1y * q1y + q1z * q1z) + w2 * (q2x * q2x + q2y * q2y + q2z * q2z) +
-                              w3 * (q3x * q3x + q3y * q3y + q3z * q3z) + w4 * (q4x * q4x + q4y * q4y + q4z * q4z);
-            const double LL = L1 * L2;
-            double f = k * (phi - phi0[s]) * LL * S / Dn;
-            // The cases without a correction (as in exercise 5.2), as selects, not branches.
-            f = L1 < 1e-24 ? 0.0 : f;              // zero-area triangle
-            f = L2 < 1e-24 ? 0.0 : f;
-            f = S2 < 1e-12 * LL ? 0.0 : f;         // flat or folded: 1 − d² < 1e-12
-            f = Dn < 1e-24 * LL * LL * LL ? 0.0 : f;  // all pinned: Σ w_j |q_j|² < 1e-24
-            const double f1 = f * w1, f2 = f * w2, f3 = f * w3, f4 = f * w4;
-            P[i1] += f1 * q1x, P[i1 + 1] += f1 * q1y, P[i1 + 2] += f1 * q1z;
-            P[i2] += f2 * q2x, P[i2 + 1] += f2 * q2y, P[i2 + 2] += f2 * q2z;
-            P[i3] += f3 * q3x, P[i3 + 1] += f3 * q3y, P[i3 + 2] += f3 * q3z;
-            P[i4] += f4 * q4x, P[i4 + 1] += f4 * q4y, P[i4 + 2] += f4 * q4z;
+            double d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z;
+            bendingCorrection(P[i1], P[i1 + 1], P[i1 + 2], P[i2], P[i2 + 1], P[i2 + 2], P[i3], P[i3 + 1], P[i3 + 2],
+                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], phi0[s], k,
+                              d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z);
+            P[i1] += d1x, P[i1 + 1] += d1y, P[i1 + 2] += d1z;
+            P[i2] += d2x, P[i2 + 1] += d2y, P[i2 + 2] += d2z;
+            P[i3] += d3x, P[i3 + 1] += d3y, P[i3 + 2] += d3z;
+            P[i4] += d4x, P[i4 + 1] += d4y, P[i4 + 2] += d4z;
+        }
+    }
+}
+
+// The sweep without scatter instructions (AVX2 has none, plain x86-64 neither): per block, one
+// vector loop loads p (AVX2 has gather) and computes the corrections into the array Dp
+// (Dp[3j + c][l]: coordinate c of Δp_j of the block's stencil l); then they are added to p one
+// stencil at a time.
+#ifdef CLOTHLAB_X86_DISPATCH
+__attribute__((target_clones("default", "arch=x86-64-v3")))
+#endif
+void sweepStaged(const BendingBlocks& B, const double* w, double k, double* P) {
+    const int *I1 = B.i1.data(), *I2 = B.i2.data(), *I3 = B.i3.data(), *I4 = B.i4.data();
+    const double* phi0 = B.phi0.data();
+    alignas(64) double Dp[12][kBendingBlockSize];
+    const int blocks = static_cast<int>(B.start.size()) - 1;
+    for (int blk = 0; blk < blocks; ++blk) {
+        const int first = B.start[blk], n = B.start[blk + 1] - first;
+#pragma omp simd
+        for (int l = 0; l < n; ++l) {
+            const int s = first + l, i1 = 3 * I1[s], i2 = 3 * I2[s], i3 = 3 * I3[s], i4 = 3 * I4[s];
+            bendingCorrection(P[i1], P[i1 + 1], P[i1 + 2], P[i2], P[i2 + 1], P[i2 + 2], P[i3], P[i3 + 1], P[i3 + 2],
+                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], phi0[s], k, Dp[0][l],
+                              Dp[1][l], Dp[2][l], Dp[3][l], Dp[4][l], Dp[5][l], Dp[6][l], Dp[7][l], Dp[8][l], Dp[9][l],
+                              Dp[10][l], Dp[11][l]);
+        }
+        for (int l = 0; l < n; ++l) {
+            const int s = first + l;
+            const int id[4] = {I1[s], I2[s], I3[s], I4[s]};
+            for (int j = 0; j < 4; ++j)
+                for (int c = 0; c < 3; ++c) P[3 * id[j] + c] += Dp[3 * j + c][l];
         }
     }
 }
@@ -136,8 +189,17 @@ BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils) {
     return B;
 }
 
-void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p) {
-    sweep(blocks, w.data(), k, p.data());
+bool bendingBlocksUseScatter() {
+#ifdef CLOTHLAB_X86_DISPATCH
+    return __builtin_cpu_supports("avx512f");
+#else
+    return false;
+#endif
+}
+
+void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, bool staged) {
+    if (!staged && bendingBlocksUseScatter()) return sweepDirect(blocks, w.data(), k, p.data());
+    sweepStaged(blocks, w.data(), k, p.data());
 }
 
 }  // namespace clothlab

@@ -2,7 +2,7 @@
 /// @brief A fast bending sweep for the reference demos and benchmarks (instructor copy only).
 ///
 /// The solver's default bending sweep calls exercise 5.2, projectBendingConstraint(), once per
-/// stencil. This file does the same projections, in the same order, 16 stencils at a time with the
+/// stencil. This file does the same projections, in the same order, several stencils at a time with the
 /// CPU's vector instructions: the solver option `solver.bending_kernel: "batched"`. It is a
 /// solved stage 05, so `./lab release` leaves it out (it lives in solutions/kernels/).
 ///
@@ -57,7 +57,14 @@ BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils);
 /// @param w       inverse masses, length N, 1/kg
 /// @param k       per-iteration stiffness k' in [0, 1]
 /// @param p       predicted positions, 3 x N, m (updated in place)
-void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p);
+/// @param staged  false: the fastest way this CPU has; true: always the way without scatter
+///                instructions (to test both on a CPU with AVX-512)
+void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, bool staged = false);
+
+/// Whether projectBendingBlocks() uses AVX-512 gather/scatter on this CPU (x86-64 with AVX-512F,
+/// compiled with GCC) or copies each block to arrays first.
+/// @return  true when the AVX-512 sweep runs
+bool bendingBlocksUseScatter();
 
 /// The angle atan2(y, x) ∈ [0, π] for y ≥ 0 as the kernel computes it, without a library call:
 /// reduced to |t| ≤ tan(π/8) (octant and a π/4 shift, \f$\arctan u-\frac{\pi}{4}=\arctan\frac{u-1}{u+1}\f$), then

@@ -44,16 +44,23 @@ struct CrumpledCloth {
     }
 };
 
+// Both ways of the batched kernel: AVX-512 gather/scatter where the CPU has it, and staged.
+constexpr bool kStaged[] = {false, true};
+
 // One stencil's Δp by both kernels (p1..p4 = particles 0..3).
 void expectSameCorrection(const char* what, const Matrix3X& p0, const VectorX& w, double phi0) {
     SCOPED_TRACE(what);
     const std::vector<BendingStencil> one = {{0, 1, 2, 3, phi0}};
-    Matrix3X ref = p0, fast = p0;
+    Matrix3X ref = p0;
     projectBendingSweep(one, w, 1.0, ref);
-    projectBendingBlocks(bendingBlocks(one), w, 1.0, fast);
-    ASSERT_TRUE(fast.allFinite()) << "NaN or Inf";
-    const double scale = std::max(1.0, p0.cwiseAbs().maxCoeff());
-    EXPECT_LE((fast - ref).cwiseAbs().maxCoeff(), 1e-12 * scale) << "batched:\n" << fast << "\nreference:\n" << ref;
+    for (bool staged : kStaged) {
+        Matrix3X fast = p0;
+        projectBendingBlocks(bendingBlocks(one), w, 1.0, fast, staged);
+        ASSERT_TRUE(fast.allFinite()) << "NaN or Inf (staged " << staged << ")";
+        const double scale = std::max(1.0, p0.cwiseAbs().maxCoeff());
+        EXPECT_LE((fast - ref).cwiseAbs().maxCoeff(), 1e-12 * scale)
+            << "staged " << staged << ", batched:\n" << fast << "\nreference:\n" << ref;
+    }
 }
 }  // namespace
 
@@ -103,14 +110,15 @@ TEST(BendingBatched, SweepMatchesTheReferenceSweepOnCrumpledCloths) {
     for (unsigned seed : {1u, 2u, 3u}) {
         const CrumpledCloth c(24, seed);
         const BendingBlocks b = bendingBlocks(c.stencils);
-        for (double k : {1.0, 0.3, 0.01}) {
-            Matrix3X ref = c.p, fast = c.p;
-            projectBendingSweep(c.stencils, c.w, k, ref);
-            projectBendingBlocks(b, c.w, k, fast);
-            ASSERT_TRUE(fast.allFinite());
-            EXPECT_GT((ref - c.p).cwiseAbs().maxCoeff(), 1e-2 * k) << "the sweep must have moved the cloth";
-            EXPECT_LE((fast - ref).cwiseAbs().maxCoeff(), 1e-8) << "seed " << seed << ", k " << k;
-        }
+        for (double k : {1.0, 0.3, 0.01})
+            for (bool staged : kStaged) {
+                Matrix3X ref = c.p, fast = c.p;
+                projectBendingSweep(c.stencils, c.w, k, ref);
+                projectBendingBlocks(b, c.w, k, fast, staged);
+                ASSERT_TRUE(fast.allFinite());
+                EXPECT_GT((ref - c.p).cwiseAbs().maxCoeff(), 1e-2 * k) << "the sweep must have moved the cloth";
+                EXPECT_LE((fast - ref).cwiseAbs().maxCoeff(), 1e-8) << "seed " << seed << ", k " << k << ", staged " << staged;
+            }
     }
 }
 
@@ -130,9 +138,10 @@ TEST(BendingBatched, CorrectionAgreesWithLongDoubleArithmetic) {
         for (int i = 0; i < 4; ++i) w[i] = std::pow(10.0, 1.5 * u(rng));
         const double phi0 = M_PI + 0.5 * u(rng);
         const std::vector<BendingStencil> one = {{0, 1, 2, 3, phi0}};
-        Matrix3X ref = p, fast = p;
+        Matrix3X ref = p, fast = p, staged = p;
         projectBendingSweep(one, w, 1.0, ref);
         projectBendingBlocks(bendingBlocks(one), w, 1.0, fast);
+        projectBendingBlocks(bendingBlocks(one), w, 1.0, staged, true);
 
         const Eigen::Matrix<long double, 3, 4> P = p.cast<long double>();
         const V a = P.col(1) - P.col(0), b = P.col(2) - P.col(0), c = P.col(3) - P.col(0);
@@ -152,13 +161,14 @@ TEST(BendingBatched, CorrectionAgreesWithLongDoubleArithmetic) {
         for (int i = 0; i < 4; ++i) {
             const V truth = P.col(i) + f * w[i] * Q[i];
             worst = std::max(worst, static_cast<double>((truth - fast.col(i).cast<long double>()).cwiseAbs().maxCoeff()));
+            worst = std::max(worst, static_cast<double>((truth - staged.col(i).cast<long double>()).cwiseAbs().maxCoeff()));
             worstReference =
                 std::max(worstReference, static_cast<double>((truth - ref.col(i).cast<long double>()).cwiseAbs().maxCoeff()));
         }
     }
     EXPECT_LE(worst, 1e-11) << "largest error of the batched kernel, m (stencils of about 1 m)";
-    std::printf("largest error against long double: batched kernel %.2g m, stage-05 reference %.2g m\n", worst,
-                worstReference);
+    std::printf("largest error against long double: batched kernel %.2g m, stage-05 reference %.2g m (%s)\n", worst,
+                worstReference, bendingBlocksUseScatter() ? "AVX-512 and staged" : "staged");
 }
 
 TEST(BendingBatched, DegenerateStencilsGiveTheReferenceResultAndNoNaN) {
