@@ -106,28 +106,20 @@ BENCHMARK(BM_BendingProjection);
 #ifdef CLOTHLAB_BENCH_BATCHED
 // The same sweep (same cloth, same stencils, same order) with the batched kernel of
 // solutions/kernels (solver.bending_kernel "batched"): 8 stencils at a time in AVX-512 registers.
-static void BM_BendingProjectionBatched(benchmark::State& st) {
+// `staged`: the kernel's way for CPUs without AVX-512 (no scatter instructions), forced.
+static void bendingBatched(benchmark::State& st, bool staged) {
     Cloth c;
     const BendingBlocks blocks = bendingBlocks(c.stencils);
     for (auto _ : st) {
-        projectBendingBlocks(blocks, c.w, 0.01, c.p);
+        projectBendingBlocks(blocks, c.w, 0.01, c.p, staged);
         benchmark::ClobberMemory();
     }
     st.counters["per_constraint"] = perConstraint(c.stencils.size(), st.iterations());
 }
+static void BM_BendingProjectionBatched(benchmark::State& st) { bendingBatched(st, false); }
 BENCHMARK(BM_BendingProjectionBatched);
-
-// The batched kernel's way for CPUs without AVX-512 (no scatter instructions), forced: on a CPU
-// without AVX-512 this is what BM_BendingProjectionBatched measures.
-static void BM_BendingProjectionBatchedStaged(benchmark::State& st) {
-    Cloth c;
-    const BendingBlocks blocks = bendingBlocks(c.stencils);
-    for (auto _ : st) {
-        projectBendingBlocks(blocks, c.w, 0.01, c.p, true);
-        benchmark::ClobberMemory();
-    }
-    st.counters["per_constraint"] = perConstraint(c.stencils.size(), st.iterations());
-}
+// On a CPU without AVX-512 this is what BM_BendingProjectionBatched measures.
+static void BM_BendingProjectionBatchedStaged(benchmark::State& st) { bendingBatched(st, true); }
 BENCHMARK(BM_BendingProjectionBatchedStaged);
 #endif
 
