@@ -106,20 +106,20 @@ BENCHMARK(BM_BendingProjection);
 #ifdef CLOTHLAB_BENCH_BATCHED
 // The same sweep (same cloth, same stencils, same order) with the batched kernel of
 // solutions/kernels (solver.bending_kernel "batched"): 8 stencils at a time in AVX-512 registers.
-// `staged`: the kernel's way for CPUs without AVX-512 (no scatter instructions), forced.
-static void bendingBatched(benchmark::State& st, bool staged) {
+// BendingLoop::Staged: the kernel's loop for CPUs without AVX-512 (no scatter instructions), forced.
+static void bendingBatched(benchmark::State& st, BendingLoop loop) {
     Cloth c;
     const BendingBlocks blocks = bendingBlocks(c.stencils);
     for (auto _ : st) {
-        projectBendingBlocks(blocks, c.w, 0.01, c.p, staged);
+        projectBendingBlocks(blocks, c.w, 0.01, c.p, loop);
         benchmark::ClobberMemory();
     }
     st.counters["per_constraint"] = perConstraint(c.stencils.size(), st.iterations());
 }
-static void BM_BendingProjectionBatched(benchmark::State& st) { bendingBatched(st, false); }
+static void BM_BendingProjectionBatched(benchmark::State& st) { bendingBatched(st, BendingLoop::Best); }
 BENCHMARK(BM_BendingProjectionBatched);
 // On a CPU without AVX-512 this is what BM_BendingProjectionBatched measures.
-static void BM_BendingProjectionBatchedStaged(benchmark::State& st) { bendingBatched(st, true); }
+static void BM_BendingProjectionBatchedStaged(benchmark::State& st) { bendingBatched(st, BendingLoop::Staged); }
 BENCHMARK(BM_BendingProjectionBatchedStaged);
 #endif
 

@@ -6,13 +6,14 @@
 // - with AVX-512 (sweepDirect) the vector loop loads and stores p itself, with gather and scatter
 //   instructions; without (sweepStaged: AVX2 has no scatter) the vector loop writes the corrections
 //   to an array, and a plain loop adds them to p;
-// - `target_clones` builds each sweep for AVX-512 or AVX2 and for plain x86-64, and
-//   projectBendingBlocks() picks what the CPU has;
+// - with GCC 12 on x86-64 Linux, `target_clones` builds each sweep for AVX-512 or AVX2 and for
+//   plain x86-64, and projectBendingBlocks() picks what the CPU has (elsewhere: one plain build);
 // - no branches in bendingCorrection(): every case is computed and the result selected
 //   (`c ? x : y` on doubles), and the angle is a polynomial instead of std::acos (a library call
 //   the loop cannot vectorise);
 // - the file is compiled with -fno-math-errno (sqrt may become one instruction) and
-//   -fno-trapping-math (see framework/CMakeLists.txt); results are plain IEEE double arithmetic.
+//   -fno-trapping-math (see framework/CMakeLists.txt); results are IEEE double arithmetic, with
+//   fused multiply-adds where the CPU has them, so the last digits depend on the CPU.
 #include "bending_batched.h"
 
 #include <algorithm>
@@ -100,7 +101,8 @@ constexpr AtanCoefficients kAtan;
     d4x = f4 * q4x, d4y = f4 * q4y, d4z = f4 * q4z;
 }
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// target_clones with "arch=x86-64-vN" needs GCC 12 and ifunc (glibc); elsewhere one plain build.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12 && defined(__x86_64__) && defined(__GLIBC__)
 #define CLOTHLAB_X86_DISPATCH 1
 #endif
 
@@ -191,15 +193,17 @@ BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils) {
 
 bool bendingBlocksUseScatter() {
 #ifdef CLOTHLAB_X86_DISPATCH
-    return __builtin_cpu_supports("avx512f");
+    return __builtin_cpu_supports("x86-64-v4");
 #else
     return false;
 #endif
 }
 
-void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, bool staged) {
-    if (!staged && bendingBlocksUseScatter()) return sweepDirect(blocks, w.data(), k, p.data());
-    sweepStaged(blocks, w.data(), k, p.data());
+void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, BendingLoop loop) {
+    if (loop == BendingLoop::Best && bendingBlocksUseScatter())
+        sweepDirect(blocks, w.data(), k, p.data());
+    else
+        sweepStaged(blocks, w.data(), k, p.data());
 }
 
 }  // namespace clothlab

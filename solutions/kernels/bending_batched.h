@@ -30,12 +30,12 @@ namespace clothlab {
 /// The bending stencils in structure-of-arrays form, cut into blocks of stencils that share no
 /// particle (so the stencils of a block can be projected at the same time).
 struct BendingBlocks {
-    std::vector<int> i1;              ///< particle i1 of stencil s (as in BendingStencil), length S
-    std::vector<int> i2;              ///< particle i2 of stencil s, length S
-    std::vector<int> i3;              ///< particle i3 of stencil s, length S
-    std::vector<int> i4;              ///< particle i4 of stencil s, length S
-    std::vector<double> phi0;         ///< rest angle of stencil s, rad, length S
-    std::vector<int> start;           ///< block b holds stencils start[b] .. start[b+1] − 1; length B + 1
+    std::vector<int> i1;              ///< particle i1 of each stencil (as in BendingStencil), one per stencil
+    std::vector<int> i2;              ///< particle i2 of each stencil
+    std::vector<int> i3;              ///< particle i3 of each stencil
+    std::vector<int> i4;              ///< particle i4 of each stencil
+    std::vector<double> phi0;         ///< rest angle φ0 of each stencil, rad
+    std::vector<int> start;           ///< block b holds stencils start[b] .. start[b+1] − 1 (one more entry than blocks)
 };
 
 /// Largest number of stencils in one block (the vector loop's width: 8 doubles × 2).
@@ -48,21 +48,27 @@ constexpr int kBendingBlockSize = 16;
 /// @return          the same stencils as blocks; projecting block by block equals projecting one by one
 BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils);
 
+/// Which vector loop projectBendingBlocks() runs.
+enum class BendingLoop {
+    Best,    ///< AVX-512 gather/scatter where the CPU has it, else Staged
+    Staged,  ///< the loop without scatter instructions (AVX2, plain x86-64, other CPUs); forced for tests
+};
+
 /// One Gauss–Seidel sweep over the stencils, block by block: the same result as projectBendingSweep()
-/// with the reference exercise 5.2 (up to rounding), with the correction in the form of this file's
-/// header. No correction (never NaN) in the cases where exercise 5.2 gives none: a zero-area triangle
-/// (L_1 or L_2 below 1e-24 m⁴), flat or folded (\f$S^2<10^{-12}L_1L_2\f$, i.e. 1 − d² < 1e-12), all
-/// pinned (\f$\sum_j w_j|\vec q_j|^2<10^{-24}\f$).
+/// with the reference exercise 5.2 up to rounding (closer to exact near flat), with the correction in
+/// the form of this file's header. No correction (never NaN) in the cases where exercise 5.2 gives
+/// none: a zero-area triangle (L_1 or L_2 below 1e-24 m⁴), flat or folded
+/// (\f$S^2<10^{-12}L_1L_2\f$, i.e. 1 − d² < 1e-12), all pinned (\f$\sum_j w_j|\vec q_j|^2<10^{-24}\f$).
 /// @param blocks  the stencils, from bendingBlocks()
 /// @param w       inverse masses, length N, 1/kg
 /// @param k       per-iteration stiffness k' in [0, 1]
 /// @param p       predicted positions, 3 x N, m (updated in place)
-/// @param staged  false: the fastest way this CPU has; true: always the way without scatter
-///                instructions (to test both on a CPU with AVX-512)
-void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, bool staged = false);
+/// @param loop    BendingLoop::Best, or Staged to test that loop on a CPU with AVX-512
+void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p,
+                          BendingLoop loop = BendingLoop::Best);
 
-/// Whether projectBendingBlocks() uses AVX-512 gather/scatter on this CPU (x86-64 with AVX-512F,
-/// compiled with GCC) or copies each block to arrays first.
+/// Whether BendingLoop::Best uses AVX-512 gather/scatter on this CPU (x86-64-v4, built with GCC ≥ 12
+/// for glibc) or the staged loop.
 /// @return  true when the AVX-512 sweep runs
 bool bendingBlocksUseScatter();
 

@@ -48,7 +48,7 @@ class PbdSimulation : public Simulation {
 public:
     /// @param scene  a scene with model "cloth" and solver.method "pbd" or "xpbd"
     /// @throws InputError for settings PBD cannot use (forces.damping > 1; solver.bending_kernel
-    ///         "batched" with XPBD or in a copy without solutions/kernels)
+    ///         "batched" with bending constraints under XPBD, or in a copy without solutions/kernels)
     explicit PbdSimulation(const Scene& scene);
     void step() override;
     /// energy (kinetic + gravity), and only for what the scene uses: max_strain and rms_strain
