@@ -101,6 +101,17 @@ constexpr AtanCoefficients kAtan;
     d4x = f4 * q4x, d4y = f4 * q4y, d4z = f4 * q4z;
 }
 
+// BendingBlocks as plain pointers, for the sweeps' loops.
+struct BlockArrays {
+    const int *i1, *i2, *i3, *i4;  // particles of each stencil
+    const double* phi0;            // rest angle of each stencil
+    const int* start;              // block b: stencils start[b] .. start[b+1] − 1
+    int blocks;                    // number of blocks
+    explicit BlockArrays(const BendingBlocks& B)
+        : i1(B.i1.data()), i2(B.i2.data()), i3(B.i3.data()), i4(B.i4.data()), phi0(B.phi0.data()),
+          start(B.start.data()), blocks(static_cast<int>(B.start.size()) - 1) {}
+};
+
 // target_clones with "arch=x86-64-vN" needs GCC 12 and ifunc (glibc); elsewhere one plain build.
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12 && defined(__x86_64__) && defined(__GLIBC__)
 #define CLOTHLAB_X86_DISPATCH 1
@@ -113,18 +124,16 @@ constexpr AtanCoefficients kAtan;
 #ifdef CLOTHLAB_X86_DISPATCH
 __attribute__((target_clones("default", "arch=x86-64-v4")))
 #endif
-void sweepDirect(const BendingBlocks& B, const double* w, double k, double* P) {
-    const int *I1 = B.i1.data(), *I2 = B.i2.data(), *I3 = B.i3.data(), *I4 = B.i4.data();
-    const double* phi0 = B.phi0.data();
-    const int blocks = static_cast<int>(B.start.size()) - 1;
-    for (int blk = 0; blk < blocks; ++blk) {
+void sweepDirect(const BlockArrays& B, const double* w, double k, double* P) {
+    const int *I1 = B.i1, *I2 = B.i2, *I3 = B.i3, *I4 = B.i4;
+    for (int blk = 0; blk < B.blocks; ++blk) {
         const int first = B.start[blk], last = B.start[blk + 1];
 #pragma omp simd
         for (int s = first; s < last; ++s) {
             const int i1 = 3 * I1[s], i2 = 3 * I2[s], i3 = 3 * I3[s], i4 = 3 * I4[s];
             double d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z;
             bendingCorrection(P[i1], P[i1 + 1], P[i1 + 2], P[i2], P[i2 + 1], P[i2 + 2], P[i3], P[i3 + 1], P[i3 + 2],
-                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], phi0[s], k,
+                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], B.phi0[s], k,
                               d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z);
             P[i1] += d1x, P[i1 + 1] += d1y, P[i1 + 2] += d1z;
             P[i2] += d2x, P[i2 + 1] += d2y, P[i2 + 2] += d2z;
@@ -141,18 +150,16 @@ void sweepDirect(const BendingBlocks& B, const double* w, double k, double* P) {
 #ifdef CLOTHLAB_X86_DISPATCH
 __attribute__((target_clones("default", "arch=x86-64-v3")))
 #endif
-void sweepStaged(const BendingBlocks& B, const double* w, double k, double* P) {
-    const int *I1 = B.i1.data(), *I2 = B.i2.data(), *I3 = B.i3.data(), *I4 = B.i4.data();
-    const double* phi0 = B.phi0.data();
+void sweepStaged(const BlockArrays& B, const double* w, double k, double* P) {
+    const int *I1 = B.i1, *I2 = B.i2, *I3 = B.i3, *I4 = B.i4;
     alignas(64) double Dp[12][kBendingBlockSize];
-    const int blocks = static_cast<int>(B.start.size()) - 1;
-    for (int blk = 0; blk < blocks; ++blk) {
+    for (int blk = 0; blk < B.blocks; ++blk) {
         const int first = B.start[blk], n = B.start[blk + 1] - first;
 #pragma omp simd
         for (int l = 0; l < n; ++l) {
             const int s = first + l, i1 = 3 * I1[s], i2 = 3 * I2[s], i3 = 3 * I3[s], i4 = 3 * I4[s];
             bendingCorrection(P[i1], P[i1 + 1], P[i1 + 2], P[i2], P[i2 + 1], P[i2 + 2], P[i3], P[i3 + 1], P[i3 + 2],
-                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], phi0[s], k, Dp[0][l],
+                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], B.phi0[s], k, Dp[0][l],
                               Dp[1][l], Dp[2][l], Dp[3][l], Dp[4][l], Dp[5][l], Dp[6][l], Dp[7][l], Dp[8][l], Dp[9][l],
                               Dp[10][l], Dp[11][l]);
         }
@@ -193,7 +200,8 @@ BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils) {
 
 bool bendingBlocksUseScatter() {
 #ifdef CLOTHLAB_X86_DISPATCH
-    return __builtin_cpu_supports("x86-64-v4");
+    static const bool avx512 = __builtin_cpu_supports("x86-64-v4");  // asked once
+    return avx512;
 #else
     return false;
 #endif
@@ -201,9 +209,9 @@ bool bendingBlocksUseScatter() {
 
 void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, BendingLoop loop) {
     if (loop == BendingLoop::Best && bendingBlocksUseScatter())
-        sweepDirect(blocks, w.data(), k, p.data());
+        sweepDirect(BlockArrays(blocks), w.data(), k, p.data());
     else
-        sweepStaged(blocks, w.data(), k, p.data());
+        sweepStaged(BlockArrays(blocks), w.data(), k, p.data());
 }
 
 }  // namespace clothlab

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "clothlab/core/grid.h"
 #include "clothlab/core/input_error.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/sim/pbd.h"
@@ -117,14 +118,7 @@ TEST(BendingBatched, BlocksKeepTheOrderAndShareNoParticle) {
     EXPECT_GE(checkBlocks(c.stencils), 0.9 * blocks) << "in the solver's colour order nearly every block is full";
     // Any order: the mesh order of bendingStencils() (neighbours one after another) and a shuffled one.
     const PbdSimulation sim(hangingScene({"cloth.nx=12", "cloth.ny=12"}));
-    std::vector<Eigen::Vector3i> triangles;
-    for (int y = 0; y + 1 < 12; ++y)
-        for (int x = 0; x + 1 < 12; ++x) {
-            const int i = 12 * y + x;
-            triangles.emplace_back(i, i + 1, i + 12);
-            triangles.emplace_back(i + 1, i + 13, i + 12);
-        }
-    std::vector<BendingStencil> meshOrder = bendingStencils(triangles, sim.state().x);
+    std::vector<BendingStencil> meshOrder = bendingStencils(gridTriangles(12, 12), sim.state().x);
     ASSERT_FALSE(meshOrder.empty());
     checkBlocks(meshOrder);
     std::shuffle(c.stencils.begin(), c.stencils.end(), std::mt19937(5));
