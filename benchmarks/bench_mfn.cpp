@@ -14,7 +14,7 @@ namespace {
 Scene clothScene(int n, const std::string& method) {
     const std::string json = R"({"model": "cloth", "cloth": {"nx": )" + std::to_string(n) + R"(, "ny": )" + std::to_string(n) +
                              R"(, "pins": ["top-edge"]}, "springs": {"structural": {"k": 100, "kd": 0.01}, "shear": {"k": 50},
-                             "bending": {"k": 10}}, "forces": {"damping": 0.001}})";
+                             "bending": {"k": 10}}, "forces": {"air_damping": 0.001}})";
     return parseScene(json, "bench", {"solver.method=" + method, "solver.dt=1e-4"});
 }
 

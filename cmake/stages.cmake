@@ -15,23 +15,6 @@ add_library(clothlab_headers INTERFACE)
 target_include_directories(clothlab_headers INTERFACE "${PROJECT_SOURCE_DIR}/framework/include")
 target_link_libraries(clothlab_headers INTERFACE Eigen3::Eigen)
 
-# Inlining the stage code into the framework's loops (the PBD solver calls a constraint projection
-# per constraint, ~10^5 times per step): stage objects and the solver are compiled with GCC's
-# link-time optimisation as "fat" objects (normal machine code plus the compiler's IR), so the
-# calls are inlined at link time. GCC takes -flto from the objects for every program that links
-# them; clothlab_inline_stages() says so explicitly for the programs where speed matters (the app,
-# the benchmarks). Results do not change (docs/pbd.md, Performance). Off: -DCLOTHLAB_LTO=OFF.
-option(CLOTHLAB_LTO "link-time inlining of the stage code into the solver (GCC)" ON)
-set(CLOTHLAB_LTO_FLAGS "")
-if(CLOTHLAB_LTO AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  set(CLOTHLAB_LTO_FLAGS -flto=auto -ffat-lto-objects)
-endif()
-function(clothlab_inline_stages target)
-  if(CLOTHLAB_LTO_FLAGS)
-    target_link_options(${target} PRIVATE -flto=auto)
-  endif()
-endfunction()
-
 function(clothlab_stage_library target dir)
   file(GLOB _src CONFIGURE_DEPENDS "${dir}/*.cpp")
   if(NOT _src)
@@ -39,7 +22,6 @@ function(clothlab_stage_library target dir)
   endif()
   add_library(${target} OBJECT ${_src})
   target_link_libraries(${target} PUBLIC clothlab_headers)
-  target_compile_options(${target} PRIVATE ${CLOTHLAB_LTO_FLAGS})
 endfunction()
 
 if(CLOTHLAB_SUBMISSION)

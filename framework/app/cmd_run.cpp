@@ -37,7 +37,7 @@ void addRunCommand(CLI::App& app, int& exit_code) {
 
         auto sim = makeSimulation(scene);
         std::cout << "scene   " << scene.file << (scene.description.empty() ? "" : "  — " + scene.description) << "\n"
-                  << "method  " << scene.solver.method << "   dt = " << scene.solver.dt << " s   steps = " << steps
+                  << "method  " << methodName(scene.solver.method) << "   dt = " << scene.solver.dt << " s   steps = " << steps
                   << "   particles = " << sim->state().size() << "\n";
         bool header = false;
         const RunResult result = runSimulation(*sim, steps, every, [&](const ReportRow& row) {

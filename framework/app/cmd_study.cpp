@@ -32,16 +32,15 @@ std::function<void(int, int, const std::string&)> progressPrinter(const std::str
     };
 }
 
-std::vector<std::string> splitMethods(const std::string& list) {
-    std::vector<std::string> out;
+std::vector<Method> splitMethods(const std::string& list) {
+    std::vector<Method> out;
     std::string cur;
     for (char c : list + ",") {
         if (c == ',') {
             if (!cur.empty()) {
-                const auto& known = solverMethods();
-                if (std::find(known.begin(), known.end(), cur) == known.end())
-                    throw InputError("command line", "--methods", "unknown method \"" + cur + "\"");
-                out.push_back(cur);
+                const std::optional<Method> m = parseMethod(cur);
+                if (!m) throw InputError("command line", "--methods", "unknown method \"" + cur + "\"");
+                out.push_back(*m);
             }
             cur.clear();
         } else if (c != ' ') {
@@ -155,11 +154,11 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         const StabilityResult r = stabilitySweep(scene, o);
         printStabilityTable(std::cout, r);
         // The measured critical step at the scene's own k, against theory (bisection).
-        for (const std::string& m : o.methods) {
+        for (Method m : o.methods) {
             const double theory = theoreticalCriticalDt(m, r.omega_ref);
             if (!(theory > 0.0) || !std::isfinite(theory)) continue;
             const double measured = measureCriticalDt(scene, m, theory / 10, theory * 10, o.criteria);
-            std::printf("%-18s critical dt at k = %g N/m: measured %.4g s, theory %.4g s (ratio %.3f)\n", m.c_str(), r.k_ref,
+            std::printf("%-18s critical dt at k = %g N/m: measured %.4g s, theory %.4g s (ratio %.3f)\n", methodName(m), r.k_ref,
                         measured, theory, measured / theory);
         }
         writeStabilityCsv(out + "/stability.csv", r);
@@ -194,7 +193,7 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         const Scene scene = loadScene(po->scene, po->sets);
         PrecisionOptions o;
         const bool positionBased = isPositionBased(scene.solver.method);
-        if (positionBased) o.methods = {"pbd", "xpbd"};
+        if (positionBased) o.methods = {Method::Pbd, Method::Xpbd};
         if (!po->methods.empty()) o.methods = splitMethods(po->methods);
         o.budgets = splitInts(po->budgets, "--budgets");
         o.sweeps.clear();

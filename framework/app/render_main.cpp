@@ -14,6 +14,7 @@
 #include <iostream>
 
 #include "clothlab/core/input_error.h"
+#include "clothlab/sim/run.h"
 #include "clothlab/core/not_implemented.h"
 #include "clothlab/gui/app.h"
 #include "clothlab/io/report.h"
@@ -84,7 +85,7 @@ int runRender(const RenderArgs& a) {
     auto stepsUntil = [&](long long f) { return std::max<long long>(f, std::llround(f / (a.fps * dt))); };
 
     std::cout << "scene   " << scene.file << (scene.description.empty() ? "" : "  — " + scene.description) << "\n"
-              << "method  " << scene.solver.method << "   dt = " << dt << " s   " << frames << " frames at " << a.fps
+              << "method  " << methodName(scene.solver.method) << "   dt = " << dt << " s   " << frames << " frames at " << a.fps
               << " fps (about " << per_frame << " steps each)   particles = " << sim->state().size() << "\n";
 
     // 1) Simulate, keeping the state of every frame (and the report rows of error against wall time).
@@ -97,14 +98,9 @@ int runRender(const RenderArgs& a) {
         if (f > 0) {
             const long long n = stepsUntil(f) - result.steps;
             for (long long k = 0; k < n; ++k) {
-                sim->step();
-                ++result.steps;
-                const State& st = sim->state();
-                const bool finite = st.isFinite();
-                if (!finite || (st.size() > 0 && st.x.colwise().norm().maxCoeff() > scene.report.blowup)) {
+                result.message = stepAndCheck(*sim, ++result.steps);
+                if (!result.message.empty()) {
                     result.unstable = true;
-                    result.message = "unstable at step " + std::to_string(result.steps) + " (t = " + std::to_string(st.t) +
-                                     " s): " + (finite ? "a particle left the region |x| < report.blowup" : "NaN or infinite state");
                     break;
                 }
                 if (result.steps % every == 0 || (f == frames - 1 && k == n - 1)) {

@@ -43,7 +43,8 @@ expect_error method       'solver.method: unknown value' '{"model": "spring", "s
 expect_error pbd_spring   'solver.method: "pbd" needs model "cloth"' '{"model": "spring", "solver": {"method": "pbd"}}'
 expect_error collider     'colliders\[0\].radius: must be > 0' '{"model": "cloth", "colliders": [{"type": "sphere", "radius": -1}]}'
 expect_error not_object   '(top level): expected an object' '[1, 2, 3]'
-expect_error pbd_damping  'forces.damping: must be in \[0, 1\] for pbd' '{"model": "cloth", "forces": {"damping": 2}, "solver": {"method": "pbd"}}'
+expect_error pbd_damping  'pbd.damping: must be <= 1 (got 2)' '{"model": "cloth", "pbd": {"damping": 2}, "solver": {"method": "pbd"}}'
+expect_error old_damping  'forces.damping: renamed: use forces.air_damping' '{"model": "cloth", "forces": {"damping": 0.1}}'
 
 # A missing file.
 "$exe" run "$tmp/nope.json" >"$tmp/out" 2>"$tmp/err"

@@ -22,7 +22,7 @@ TEST(Scene, DefaultsAndOverrides) {
     EXPECT_EQ(s.spring.k, 50.0);
     EXPECT_EQ(s.spring.mass, 2.0);
     EXPECT_EQ(s.solver.dt, 0.02);
-    EXPECT_EQ(s.solver.method, "symplectic_euler");
+    EXPECT_EQ(s.solver.method, Method::SymplecticEuler);
     EXPECT_FALSE(s.springs.structural.enabled) << "a scene names what it uses; nothing else is on";
     EXPECT_TRUE(s.colliders.empty());
 }

@@ -21,11 +21,11 @@ Scene hangingChain() { return scene("chain.json", {"chain.direction=[0,-1,0]", "
 }  // namespace
 
 TEST(Theory, CriticalValuesRightSideUp) {
-    EXPECT_DOUBLE_EQ(theoreticalCriticalDt("symplectic_euler", 10.0), 0.2);
-    EXPECT_DOUBLE_EQ(theoreticalCriticalDt("velocity_verlet", 10.0), 0.2);
-    EXPECT_NEAR(theoreticalCriticalDt("rk4", 10.0), 0.2828427, 1e-6);
-    EXPECT_TRUE(std::isinf(theoreticalCriticalDt("implicit_euler", 10.0)));
-    EXPECT_EQ(theoreticalCriticalDt("explicit_euler", 10.0), 0.0);
+    EXPECT_DOUBLE_EQ(theoreticalCriticalDt(Method::SymplecticEuler, 10.0), 0.2);
+    EXPECT_DOUBLE_EQ(theoreticalCriticalDt(Method::VelocityVerlet, 10.0), 0.2);
+    EXPECT_NEAR(theoreticalCriticalDt(Method::Rk4, 10.0), 0.2828427, 1e-6);
+    EXPECT_TRUE(std::isinf(theoreticalCriticalDt(Method::ImplicitEuler, 10.0)));
+    EXPECT_EQ(theoreticalCriticalDt(Method::ExplicitEuler, 10.0), 0.0);
     // k_crit = m pi^2 / dt^2: a SMALLER step allows a STIFFER spring (the slides have it upside down).
     EXPECT_NEAR(provotCriticalStiffness(1.0, 0.1), M_PI * M_PI / 0.01, 1e-9);
     EXPECT_GT(provotCriticalStiffness(1.0, 0.01), provotCriticalStiffness(1.0, 0.1));
@@ -53,7 +53,7 @@ TEST(Stability, SymplecticEulerCriticalStepOfSingleSpring) {
     StabilityCriteria crit;
     const Scene s = scene("spring.json", {"spring.start=[0,-1.108,0]"});
     const double omega = maxAngularFrequency(s);
-    const double measured = measureCriticalDt(s, "symplectic_euler", 0.05, 0.5, crit);
+    const double measured = measureCriticalDt(s, Method::SymplecticEuler, 0.05, 0.5, crit);
     std::printf("single spring: measured critical omega dt = %.4f (theory 2)\n", measured * omega);
     EXPECT_NEAR(measured * omega, 2.0, 0.2) << "measured critical dt " << measured << " s vs theory 2/omega = " << 2.0 / omega << " s";
 }
@@ -62,14 +62,14 @@ TEST(Stability, SymplecticEulerCriticalStepOfChain) {
     StabilityCriteria crit;
     const Scene c = hangingChain();
     const double omega = maxAngularFrequency(c);
-    const double measured = measureCriticalDt(c, "symplectic_euler", 0.2 / omega, 20.0 / omega, crit);
+    const double measured = measureCriticalDt(c, Method::SymplecticEuler, 0.2 / omega, 20.0 / omega, crit);
     std::printf("chain: omega_max = %.2f rad/s, measured critical omega_max dt = %.4f (theory 2)\n", omega, measured * omega);
     EXPECT_NEAR(measured * omega, 2.0, 0.2) << "measured critical dt " << measured << " s vs theory 2/omega_max = " << 2.0 / omega << " s";
 }
 
 TEST(Stability, SmallSweepAgreesWithTheory) {
     StabilityOptions o;
-    o.methods = {"symplectic_euler", "implicit_euler"};
+    o.methods = {Method::SymplecticEuler, Method::ImplicitEuler};
     o.k_min = 10, o.k_max = 1e5, o.k_count = 5, o.dt_min = 1e-4, o.dt_max = 1e-1, o.dt_count = 5;
     o.criteria.steps = 300;
     const StabilityResult r = stabilitySweep(scene("spring.json"), o);
@@ -77,7 +77,7 @@ TEST(Stability, SmallSweepAgreesWithTheory) {
     int agree = 0;
     for (const StabilityPoint& p : r.points) {
         const bool theory = p.dt < theoreticalCriticalDt(p.method, p.omega_max);
-        if (p.method == "implicit_euler") {
+        if (p.method == Method::ImplicitEuler) {
             EXPECT_TRUE(p.verdict.stable) << "implicit Euler, k = " << p.k << ", dt = " << p.dt;
         }
         agree += theory == p.verdict.stable;
@@ -87,7 +87,7 @@ TEST(Stability, SmallSweepAgreesWithTheory) {
 
 TEST(Precision, ConvergenceOrdersOnSingleSpring) {
     PrecisionOptions o;
-    o.methods = {"explicit_euler", "symplectic_euler", "velocity_verlet", "rk4"};
+    o.methods = {Method::ExplicitEuler, Method::SymplecticEuler, Method::VelocityVerlet, Method::Rk4};
     o.dt_min = 1e-3, o.dt_max = 1e-2, o.dt_count = 4, o.end_time = 1.0;
     const PrecisionResult r = precisionStudy(scene("spring.json"), o);
     EXPECT_EQ(r.reference, "analytic");
@@ -100,7 +100,7 @@ TEST(Precision, ConvergenceOrdersOnSingleSpring) {
 
 TEST(Precision, ReferenceRunWithoutAnalyticSolution) {
     PrecisionOptions o;
-    o.methods = {"velocity_verlet"};
+    o.methods = {Method::VelocityVerlet};
     o.dt_min = 2.5e-4, o.dt_max = 1e-3, o.dt_count = 3, o.end_time = 0.2;
     const PrecisionResult r = precisionStudy(hangingChain(), o);
     EXPECT_NE(r.reference.find("rk4 at dt"), std::string::npos);
@@ -112,10 +112,10 @@ namespace {
 PrecisionResult smallPositionBasedStudy() {
     static const PrecisionResult r = [] {
         PrecisionOptions o;
-        o.methods = {"pbd"};
+        o.methods = {Method::Pbd};
         o.budgets = {1, 4, 16};
         o.end_time = 0.3;
-        o.reference_method = "xpbd";
+        o.reference_method = Method::Xpbd;
         o.reference_substeps = 256;
         return precisionStudy(scene("pbd_hanging.json", {"cloth.nx=8", "cloth.ny=8"}), o);
     }();
@@ -174,11 +174,11 @@ TEST(PrecisionPbd, XpbdConvergesToAStretchyClothPbdDoesNot) {
     // substeps converge to it; PBD with k = 1 converges to an inextensible cloth, so its error stalls
     // at the gap between the two models: the point of XPBD.
     PrecisionOptions o;
-    o.methods = {"pbd", "xpbd"};
+    o.methods = {Method::Pbd, Method::Xpbd};
     o.sweeps = {"substeps"};
     o.budgets = {4, 16, 64};
     o.end_time = 0.3;
-    o.reference_method = "xpbd";
+    o.reference_method = Method::Xpbd;
     o.reference_substeps = 512;
     const PrecisionResult r =
         precisionStudy(scene("pbd_hanging.json", {"cloth.nx=8", "cloth.ny=8", "constraints.distance.compliance=1e-3"}), o);

@@ -308,7 +308,7 @@ TEST(App, EveryMethodRunsOrExplainsItself) {
     OffscreenImGui gui(w, h);
     ImGuiIO& io = ImGui::GetIO();
     const char* tmp = std::getenv("CLOTHLAB_TEST_TMP");
-    for (const std::string& method : solverMethods()) {
+    for (const std::string method : {"explicit_euler", "symplectic_euler", "velocity_verlet", "rk4", "implicit_euler", "pbd", "xpbd"}) {
         const std::string path = std::string(tmp ? tmp : ".") + "/cloth_" + method + ".json";
         std::FILE* f = std::fopen(path.c_str(), "w");
         ASSERT_NE(f, nullptr);
@@ -349,7 +349,11 @@ public:
         edges_.emplace_back(0, 1);
     }
     void step() override { throw NotImplemented("exercise 1.4 symplecticEulerStep"); }
-    std::vector<Metric> metrics() const override { return {}; }
+    const State& state() const override { return state_; }
+    State& state() override { return state_; }
+
+private:
+    State state_;
 };
 }  // namespace
 

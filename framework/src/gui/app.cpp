@@ -13,6 +13,7 @@
 #include "clothlab/core/not_implemented.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/render/overlay.h"
+#include "clothlab/sim/run.h"
 
 #ifndef CLOTHLAB_STAGE_CODE
 #define CLOTHLAB_STAGE_CODE ""
@@ -129,7 +130,7 @@ bool App::load(const std::string& path) {
     energy_.clear(), error_.clear(), step_ms_.clear();
     camera_set_ = false;
     view_.color_by_strain = options_.strain;
-    view_.edges = options_.strain ? true : options_.edges < 0 ? (scene_.model != "cloth" && options_.wave_grid < 2) : options_.edges == 1;
+    view_.edges = options_.strain ? true : options_.edges < 0 ? (scene_.model != Model::Cloth && options_.wave_grid < 2) : options_.edges == 1;
     rebuild(false);
     return true;
 }
@@ -165,7 +166,7 @@ void App::rebuild(bool keep_state) {
             if (pinned) st.w[i] = 0.0;
             else if (st.w[i] == 0.0) st.w[i] = 1.0;
         }
-    if (!keep_state) energy_.clear(), error_.clear(), step_ms_.clear();
+    if (!keep_state) energy_.clear(), error_.clear(), step_ms_.clear(), steps_ = 0;
 }
 
 DrawData App::currentDrawData() const {
@@ -176,8 +177,9 @@ DrawData App::currentDrawData() const {
 void App::safeStep() {
     if (!sim_) return;
     const auto t0 = std::chrono::steady_clock::now();
+    std::string unstable;
     try {
-        sim_->step();
+        unstable = stepAndCheck(*sim_, ++steps_);
     } catch (const NotImplemented& e) {
         message_ = e.what();
         stub_hit_ = e.what();
@@ -189,9 +191,8 @@ void App::safeStep() {
         return;
     }
     last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    const State& st = sim_->state();
-    if (!st.isFinite() || (st.size() > 0 && st.x.colwise().norm().maxCoeff() > scene_.report.blowup)) {
-        message_ = "unstable at t = " + std::to_string(sim_->state().t) + " s: reduce dt or stiffness, then Reset";
+    if (!unstable.empty()) {
+        message_ = unstable + ": reduce dt or stiffness, then Reset";
         playing_ = false;
     }
 }
@@ -310,7 +311,7 @@ void App::frame(int width, int height) {
         const double reach = (hi - lo).maxCoeff();
         bool pinned = false;
         for (int i = 0; i < d.w.size(); ++i) pinned = pinned || d.w[i] == 0;
-        if (scene_.model != "spring" && pinned) lo.y() -= 0.5 * reach;
+        if (scene_.model != Model::Spring && pinned) lo.y() -= 0.5 * reach;
         const double panel = 360.0;
         cam_ = sceneCamera(scene_, lo, hi, double(width - panel) / height);
         // Shift the view so the scene sits in the part of the window right of the panel.
@@ -376,9 +377,9 @@ void App::panelScene() {
         ImGui::EndCombo();
     }
     if (!scene_.description.empty()) ImGui::TextWrapped("%s", scene_.description.c_str());
-    if (ImGui::BeginCombo("method", scene_.solver.method.c_str())) {
-        for (const std::string& m : solverMethods())
-            if (ImGui::Selectable(m.c_str(), m == scene_.solver.method)) {
+    if (ImGui::BeginCombo("method", methodName(scene_.solver.method))) {
+        for (Method m : allMethods())
+            if (ImGui::Selectable(methodName(m), m == scene_.solver.method)) {
                 scene_.solver.method = m;
                 rebuild(true);
             }
@@ -403,17 +404,17 @@ void App::panelParameters() {
     bool changed = false;
     SolverSpec& sv = scene_.solver;
     changed |= sliderD("dt [s]", sv.dt, 1e-5, 0.05, "%.5f", true);
-    const bool position_based = sv.method == "pbd" || sv.method == "xpbd";
+    const bool position_based = isPositionBased(sv.method);
     if (position_based) {
         ImGui::SliderInt("iterations", &sv.iterations, 1, 100);
         changed |= ImGui::IsItemDeactivatedAfterEdit();
         ImGui::SliderInt("substeps", &sv.substeps, 1, 50);
         changed |= ImGui::IsItemDeactivatedAfterEdit();
     }
-    if (scene_.model == "spring") {
+    if (scene_.model == Model::Spring) {
         changed |= sliderD("k [N/m]", scene_.spring.k, 1, 1e4, "%.1f", true);
         changed |= sliderD("kd [Ns/m]", scene_.spring.kd, 0, 10, "%.3f");
-    } else if (scene_.model == "chain") {
+    } else if (scene_.model == Model::Chain) {
         changed |= sliderD("k [N/m]", scene_.chain.k, 1, 1e5, "%.1f", true);
         changed |= sliderD("kd [Ns/m]", scene_.chain.kd, 0, 10, "%.3f");
     } else {
@@ -445,12 +446,14 @@ void App::panelParameters() {
                 changed |= ImGui::Checkbox("##on", &g->enabled);
                 ImGui::SameLine();
                 ImGui::SetNextItemWidth(155);
-                if (sv.method == "xpbd") changed |= sliderD((std::string(name) + " alpha").c_str(), g->compliance, 0, 1e-2, "%.2e");
+                if (sv.method == Method::Xpbd) changed |= sliderD((std::string(name) + " alpha").c_str(), g->compliance, 0, 1e-2, "%.2e");
                 else changed |= sliderD((std::string(name) + " k").c_str(), g->stiffness, 0, 1, "%.3f");
                 ImGui::PopID();
             }
     }
-    changed |= sliderD("damping", scene_.forces.damping, 0, position_based ? 1.0 : 5.0, "%.3f");
+    // Two quantities, two sliders: the air damping force (every method) and dampVelocities' k_damping (pbd, xpbd).
+    changed |= sliderD("air damping [N s/m]", scene_.forces.air_damping, 0, 5.0, "%.3f");
+    if (position_based) changed |= sliderD("k_damping [1]", scene_.pbd.damping, 0, 1.0, "%.3f");
     float wind[3] = {float(scene_.forces.wind.x()), float(scene_.forces.wind.y()), float(scene_.forces.wind.z())};
     ImGui::SliderFloat3("wind [m/s]", wind, -20, 20, "%.1f");
     if (ImGui::IsItemActive() || ImGui::IsItemDeactivatedAfterEdit()) scene_.forces.wind = Vec3(wind[0], wind[1], wind[2]);

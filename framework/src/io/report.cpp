@@ -62,9 +62,9 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
 
 void writeReportCsv(const std::string& path, const RunResult& r) {
     std::ofstream out = openForWriting(path);
-    out << "step,t,wall";
+    out << "step,t [s],wall [s]";
     if (!r.rows.empty())
-        for (const Metric& m : r.rows.front().metrics) out << "," << m.name;
+        for (const Metric& m : r.rows.front().metrics) out << "," << label(m);
     out << "\n";
     for (const ReportRow& row : r.rows) {
         out << row.step << "," << row.t << "," << row.wall;
@@ -76,7 +76,7 @@ void writeReportCsv(const std::string& path, const RunResult& r) {
 void writeSummaryJson(const std::string& path, const Simulation& sim, const RunResult& r) {
     nlohmann::json j;
     j["scene"] = sim.scene().file;
-    j["method"] = sim.scene().solver.method;
+    j["method"] = methodName(sim.scene().solver.method);
     j["dt"] = sim.scene().solver.dt;
     j["particles"] = sim.state().size();
     j["steps"] = r.steps;

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clothlab/core/input_error.h"
+#include "clothlab/sim/extensions.h"
 
 namespace clothlab {
 namespace {
@@ -274,14 +275,15 @@ Scene readScene(const json& doc, const std::string& file) {
     Scene s;
     s.file = file;
     s.description = r.text("description", "");
-    s.model = r.choice("model", "", {"spring", "chain", "cloth"});
-    if (s.model.empty()) r.fail("model", "missing (spring, chain or cloth)");
-    if (s.model == "spring") s.spring = readSpring(r.object("spring"));
-    else if (r.has("spring")) r.fail("spring", "given but model is \"" + s.model + "\"");
-    if (s.model == "chain") s.chain = readChain(r.object("chain"));
-    else if (r.has("chain")) r.fail("chain", "given but model is \"" + s.model + "\"");
-    if (s.model == "cloth") s.cloth = readCloth(r.object("cloth"));
-    else if (r.has("cloth")) r.fail("cloth", "given but model is \"" + s.model + "\"");
+    const std::string model = r.choice("model", "", {"spring", "chain", "cloth"});
+    if (model.empty()) r.fail("model", "missing (spring, chain or cloth)");
+    s.model = model == "spring" ? Model::Spring : model == "chain" ? Model::Chain : Model::Cloth;
+    if (s.model == Model::Spring) s.spring = readSpring(r.object("spring"));
+    else if (r.has("spring")) r.fail("spring", "given but model is \"" + model + "\"");
+    if (s.model == Model::Chain) s.chain = readChain(r.object("chain"));
+    else if (r.has("chain")) r.fail("chain", "given but model is \"" + model + "\"");
+    if (s.model == Model::Cloth) s.cloth = readCloth(r.object("cloth"));
+    else if (r.has("cloth")) r.fail("cloth", "given but model is \"" + model + "\"");
 
     Reader springs = r.object("springs");
     if (springs.has("structural")) s.springs.structural = readSpringGroup(springs.object("structural"));
@@ -309,22 +311,31 @@ Scene readScene(const json& doc, const std::string& file) {
 
     Reader f = r.object("forces");
     s.forces.gravity = f.vec3("gravity", s.forces.gravity);
-    s.forces.damping = f.number("damping", s.forces.damping, 0);
+    if (f.has("damping"))  // one name had two meanings (N s/m and [0, 1]) before it was split
+        f.fail("damping", "renamed: use forces.air_damping (force -c v, N s/m; force-based methods and pbd/xpbd) or "
+                          "pbd.damping (k_damping of dampVelocities in [0, 1]; pbd and xpbd)");
+    s.forces.air_damping = f.number("air_damping", s.forces.air_damping, 0);
     s.forces.wind = f.vec3("wind", s.forces.wind);
     s.forces.drag = f.number("drag", s.forces.drag, 0);
     f.finish();
 
     Reader sv = r.object("solver");
-    s.solver.method = sv.choice("method", s.solver.method, solverMethods());
+    std::vector<std::string> methods;
+    for (Method m : allMethods()) methods.push_back(methodName(m));
+    s.solver.method = *parseMethod(sv.choice("method", methodName(s.solver.method), methods));
     s.solver.dt = sv.number("dt", s.solver.dt, 0, 10, true);
     s.solver.steps = sv.integer("steps", s.solver.steps, 0, 1'000'000'000);
     s.solver.iterations = sv.integer("iterations", s.solver.iterations, 0, 100000);
     s.solver.substeps = sv.integer("substeps", s.solver.substeps, 1, 100000);
     s.solver.thickness = sv.number("thickness", s.solver.thickness, 0);
-    s.solver.bendingKernel = sv.choice("bending_kernel", s.solver.bendingKernel, {"exercise", "batched"});
-    const bool position_based = s.solver.method == "pbd" || s.solver.method == "xpbd";
-    if (position_based && s.model != "cloth") sv.fail("method", "\"" + s.solver.method + "\" needs model \"cloth\" (got \"" + s.model + "\")");
+    s.solver.bendingKernel = sv.choice("bending_kernel", s.solver.bendingKernel, bendingSweepNames());
+    if (isPositionBased(s.solver.method) && s.model != Model::Cloth)
+        sv.fail("method", std::string("\"") + methodName(s.solver.method) + "\" needs model \"cloth\" (got \"" + model + "\")");
     sv.finish();
+
+    Reader pbd = r.object("pbd");
+    s.pbd.damping = pbd.number("damping", s.pbd.damping, 0, 1);
+    pbd.finish();
 
     Reader rep = r.object("report");
     s.report.every = rep.integer("every", s.report.every, 0, 1'000'000'000);
@@ -343,12 +354,6 @@ Scene readScene(const json& doc, const std::string& file) {
 }
 
 }  // namespace
-
-const std::vector<std::string>& solverMethods() {
-    static const std::vector<std::string> methods = {"explicit_euler", "symplectic_euler", "velocity_verlet",
-                                                     "rk4", "implicit_euler", "pbd", "xpbd"};
-    return methods;
-}
 
 Scene parseScene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
     json doc;

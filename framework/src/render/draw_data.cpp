@@ -40,7 +40,7 @@ std::string titleOf(const Scene& s) {
     std::string name = s.file;
     const auto slash = name.find_last_of('/');
     if (slash != std::string::npos) name = name.substr(slash + 1);
-    return name + "  |  " + s.solver.method + "  |  dt = " + std::to_string(s.solver.dt).substr(0, 7) + " s";
+    return name + "  |  " + methodName(s.solver.method) + "  |  dt = " + std::to_string(s.solver.dt).substr(0, 7) + " s";
 }
 
 void setEdges(DrawData& d, const std::vector<Eigen::Vector2i>& edges, const Scene& s, const State& rest) {
@@ -48,12 +48,12 @@ void setEdges(DrawData& d, const std::vector<Eigen::Vector2i>& edges, const Scen
     d.edge_kind.clear();
     d.rest_length.clear();
     for (const auto& e : edges) {
-        if (s.model == "cloth") {
+        if (s.model == Model::Cloth) {
             d.edge_kind.push_back(gridKind(e[0], e[1], s.cloth.nx));
             d.rest_length.push_back((rest.x.col(e[0]) - rest.x.col(e[1])).norm());
         } else {
             d.edge_kind.push_back(EdgeKind::Single);
-            d.rest_length.push_back(s.model == "chain" ? s.chain.l0 : s.spring.l0);
+            d.rest_length.push_back(s.model == Model::Chain ? s.chain.l0 : s.spring.l0);
         }
     }
 }
@@ -92,7 +92,7 @@ DrawData makeDrawData(const Simulation& sim) {
     d.colliders = s.colliders;
     d.title = titleOf(s);
     State rest;
-    if (s.model == "cloth") {
+    if (s.model == Model::Cloth) {
         rest = makeGridState(s.cloth);
         if (rest.size() == sim.state().size()) setUv(d, s.cloth);
         else rest = sim.state();
@@ -110,7 +110,7 @@ DrawData makeClothDrawData(const ClothSpec& spec, const State& state, const Stat
     d.t = state.t;
     d.triangles = gridTriangles(spec.nx, spec.ny);
     Scene s;
-    s.model = "cloth";
+    s.model = Model::Cloth;
     s.cloth = spec;
     setEdges(d, gridEdges(spec.nx, spec.ny), s, rest);
     setUv(d, spec);
@@ -119,11 +119,11 @@ DrawData makeClothDrawData(const ClothSpec& spec, const State& state, const Stat
 
 DrawData makeDrawData(const Scene& s) {
     DrawData d;
-    if (s.model == "cloth") {
+    if (s.model == Model::Cloth) {
         const State st = makeGridState(s.cloth);
         d = makeClothDrawData(s.cloth, st, st);
     } else {
-        const MassSpringModel m = s.model == "chain" ? makeChain(s.chain) : makeSingleSpring(s.spring);
+        const MassSpringModel m = s.model == Model::Chain ? makeChain(s.chain) : makeSingleSpring(s.spring);
         d.x = m.state.x;
         d.w = m.state.w;
         std::vector<Eigen::Vector2i> e;

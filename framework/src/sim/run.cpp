@@ -4,19 +4,31 @@
 #include <sstream>
 
 namespace clothlab {
-namespace {
-/// Why the state is not usable any more, or "" when it is fine.
-std::string instability(const State& s, double bound) {
+
+std::string instabilityReason(const State& s, double bound) {
     if (!s.x.allFinite()) return "position is NaN or infinite";
     if (!s.v.allFinite()) return "velocity is NaN or infinite";
     if (s.x.size() > 0 && s.x.colwise().norm().maxCoeff() > bound) {
         std::ostringstream m;
-        m << "a particle left the region |x| < " << bound << " m";
+        m << "a particle left the region |x| < " << bound << " m (report.blowup)";
         return m.str();
     }
     return "";
 }
-}  // namespace
+
+std::string stepAndCheck(Simulation& sim, long long step) {
+    std::string why;
+    try {
+        sim.step();
+        why = instabilityReason(sim.state(), sim.scene().report.blowup);
+    } catch (const SolverFailure& e) {
+        why = e.what();
+    }
+    if (why.empty()) return why;
+    std::ostringstream m;
+    m << "unstable at step " << step << " (t = " << sim.state().t << " s): " << why;
+    return m.str();
+}
 
 RunResult runSimulation(Simulation& sim, long long steps, long long every,
                         const std::function<void(const ReportRow&)>& on_row) {
@@ -29,15 +41,12 @@ RunResult runSimulation(Simulation& sim, long long steps, long long every,
     };
     record();
     while (result.steps < steps) {
-        sim.step();
+        const std::string unstable = stepAndCheck(sim, result.steps + 1);
         ++result.steps;
         result.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        const std::string why = instability(sim.state(), sim.scene().report.blowup);
-        if (!why.empty()) {
-            std::ostringstream m;
-            m << "unstable at step " << result.steps << " (t = " << sim.state().t << " s): " << why;
+        if (!unstable.empty()) {
             result.unstable = true;
-            result.message = m.str();
+            result.message = unstable;
             return result;  // no metrics of a broken state
         }
         if (result.steps % every == 0 || result.steps == steps) record();

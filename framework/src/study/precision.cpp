@@ -19,7 +19,7 @@
 namespace clothlab {
 namespace {
 
-Scene withMethod(Scene s, const std::string& method, double dt) {
+Scene withMethod(Scene s, Method method, double dt) {
     s.solver.method = method;
     s.solver.dt = dt;
     return s;
@@ -43,13 +43,6 @@ std::vector<std::string> methodsOf(const PrecisionResult& r) {
     return m;
 }
 
-/// The metric rms_strain of a simulation, NaN if it has none.
-double strainOf(const Simulation& sim) {
-    for (const Metric& m : sim.metrics())
-        if (m.name == "rms_strain") return m.value;
-    return std::numeric_limits<double>::quiet_NaN();
-}
-
 /// Number of constraints a position-based simulation projects per iteration (distance + bending).
 double constraintCount(const Simulation& sim) {
     const auto* pbd = dynamic_cast<const PbdSimulation*>(&sim);
@@ -67,7 +60,7 @@ double timedRun(const Scene& scene, long long steps, const Matrix3X& ref, Precis
         spent += res.wall;
         run.unstable = res.unstable;
         run.error = res.unstable ? std::numeric_limits<double>::quiet_NaN() : rmsError(sim->state(), ref);
-        run.strain = res.unstable ? std::numeric_limits<double>::quiet_NaN() : strainOf(*sim);
+        run.strain = res.unstable ? std::numeric_limits<double>::quiet_NaN() : sim->strain().rms;
         count = constraintCount(*sim);
         if (res.unstable) break;
     }
@@ -79,13 +72,13 @@ std::unique_ptr<Simulation> positionBasedReference(const Scene& scene, const Pre
     const long long steps = stepsFor(o.end_time, scene.solver.dt);
     auto sim = makeSimulation(positionBasedScene(scene, o.reference_method, o.reference_iterations, substeps));
     const RunResult r = runSimulation(*sim, steps, steps);
-    if (r.unstable) throw InputError(scene.file, "solver", "the reference run (" + o.reference_method + ") is unstable: " + r.message);
+    if (r.unstable) throw InputError(scene.file, "solver", std::string("the reference run (") + methodName(o.reference_method) + ") is unstable: " + r.message);
     return sim;
 }
 
 std::string positionBasedLabel(const Scene& scene, const PrecisionOptions& o) {
     std::ostringstream s;
-    s << o.reference_method << " with " << o.reference_substeps << " substeps x " << o.reference_iterations
+    s << methodName(o.reference_method) << " with " << o.reference_substeps << " substeps x " << o.reference_iterations
       << " iteration(s) per frame (substep " << std::setprecision(4) << scene.solver.dt / o.reference_substeps << " s)";
     return s.str();
 }
@@ -98,16 +91,14 @@ std::string fileName(std::string series) {
 
 }  // namespace
 
-bool isPositionBased(const std::string& method) { return method == "pbd" || method == "xpbd"; }
-
-Scene positionBasedScene(const Scene& scene, const std::string& method, int iterations, int substeps) {
+Scene positionBasedScene(const Scene& scene, Method method, int iterations, int substeps) {
     Scene s = scene;
     s.solver.method = method;
     s.solver.iterations = iterations;
     s.solver.substeps = substeps;
     const auto perSubstep = [substeps](double k) { return k >= 1.0 ? k : 1.0 - std::pow(1.0 - k, 1.0 / substeps); };
-    s.forces.damping = perSubstep(scene.forces.damping);
-    if (method == "pbd") {
+    s.pbd.damping = perSubstep(scene.pbd.damping);
+    if (method == Method::Pbd) {
         s.constraints.distance.stiffness = perSubstep(scene.constraints.distance.stiffness);
         s.constraints.bending.stiffness = perSubstep(scene.constraints.bending.stiffness);
     }
@@ -116,7 +107,7 @@ Scene positionBasedScene(const Scene& scene, const std::string& method, int iter
 
 Matrix3X precisionReference(const Scene& scene, const PrecisionOptions& o, std::string* label) {
     if (const auto exact = singleSpringAnalytic(scene)) {
-        auto sim = makeSimulation(withMethod(scene, "symplectic_euler", scene.solver.dt));
+        auto sim = makeSimulation(withMethod(scene, Method::SymplecticEuler, scene.solver.dt));
         Matrix3X ref = sim->state().x;
         const Vec3 axis = (scene.spring.start - scene.spring.anchor).normalized();
         ref.col(1) = scene.spring.anchor + exact->position(o.end_time) * axis;
@@ -134,10 +125,10 @@ Matrix3X precisionReference(const Scene& scene, const PrecisionOptions& o, std::
     auto sim = makeSimulation(withMethod(scene, o.reference_method, dt_exact));
     const RunResult r = runSimulation(*sim, steps, steps);
     if (r.unstable)
-        throw InputError(scene.file, "solver", "the reference run (" + o.reference_method + ") is unstable: " + r.message);
+        throw InputError(scene.file, "solver", std::string("the reference run (") + methodName(o.reference_method) + ") is unstable: " + r.message);
     if (label) {
         std::ostringstream s;
-        s << o.reference_method << " at dt = " << std::setprecision(4) << dt_exact << " s";
+        s << methodName(o.reference_method) << " at dt = " << std::setprecision(4) << dt_exact << " s";
         *label = s.str();
     }
     return sim->state().x;
@@ -152,7 +143,7 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
         auto sim = positionBasedReference(scene, o, o.reference_substeps);
         ref = sim->state().x;
         r.reference = positionBasedLabel(scene, o);
-        r.reference_strain = strainOf(*sim);
+        r.reference_strain = sim->strain().rms;
         // The reference's own error: how far it moves when its substeps are halved.
         auto coarse = positionBasedReference(scene, o, std::max(1, o.reference_substeps / 2));
         r.reference_change = rmsError(coarse->state(), ref);
@@ -161,11 +152,12 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
     }
     const std::vector<double> dts = logSpace(o.dt_min, o.dt_max, o.dt_count);
     int total = 0;
-    for (const std::string& method : o.methods)
-        total += isPositionBased(method) ? static_cast<int>(o.sweeps.size() * o.budgets.size()) : static_cast<int>(dts.size());
+    for (Method m : o.methods)
+        total += isPositionBased(m) ? static_cast<int>(o.sweeps.size() * o.budgets.size()) : static_cast<int>(dts.size());
     int done = 0;
-    for (const std::string& method : o.methods) {
-        if (isPositionBased(method)) {
+    for (Method m : o.methods) {
+        const std::string method = methodName(m);
+        if (isPositionBased(m)) {
             r.position_based = true;
             for (const std::string& sweep : o.sweeps) {
                 const std::string series = method + " " + sweep;
@@ -177,7 +169,7 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
                     run.substeps = sweep == "substeps" ? b : 1;
                     run.steps = stepsFor(o.end_time, scene.solver.dt);
                     run.dt = scene.solver.dt / run.substeps;
-                    const Scene s = positionBasedScene(scene, method, run.iterations, run.substeps);
+                    const Scene s = positionBasedScene(scene, m, run.iterations, run.substeps);
                     const double n = timedRun(s, run.steps, ref, run);
                     run.projections = n * run.iterations * run.substeps / scene.solver.dt;
                     r.runs.push_back(run);
@@ -193,7 +185,7 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
             run.series = method;
             run.steps = stepsFor(o.end_time, *it);
             run.dt = o.end_time / static_cast<double>(run.steps);
-            timedRun(withMethod(scene, method, run.dt), run.steps, ref, run);
+            timedRun(withMethod(scene, m, run.dt), run.steps, ref, run);
             r.runs.push_back(run);
             if (o.progress) o.progress(++done, total, method);
         }
@@ -229,7 +221,7 @@ double costSlope(const std::vector<PrecisionRun>& runs, const std::string& serie
 void writePrecisionCsv(const std::string& path, const PrecisionResult& r) {
     std::ofstream out(path);
     if (!out) throw InputError(path, "(file)", "cannot write the file");
-    out << std::setprecision(10) << "method,dt,steps,error,wall,unstable,series,iterations,substeps,projections_per_s,rms_strain\n";
+    out << std::setprecision(10) << "method,dt [s],steps,error [m],wall [s],unstable,series,iterations,substeps,projections_per_s [1/s],rms_strain [1]\n";
     for (const PrecisionRun& p : r.runs)
         out << p.method << "," << p.dt << "," << p.steps << "," << p.error << "," << p.wall << "," << (p.unstable ? 1 : 0) << ","
             << p.series << "," << p.iterations << "," << p.substeps << "," << p.projections << "," << p.strain << "\n";
@@ -311,7 +303,7 @@ void printPrecisionTable(std::ostream& out, const PrecisionResult& r) {
     }
     out << "measured order (slope of log error over log dt; theory: explicit/symplectic/implicit Euler 1, Verlet 2, RK4 4):\n";
     for (const std::string& m : methodsOf(r)) {
-        if (isPositionBased(m.substr(0, m.find(' ')))) continue;
+        if (isPositionBased(*parseMethod(m.substr(0, m.find(' '))))) continue;  // a series "<method> <sweep>"
         std::snprintf(buf, sizeof buf, "  %-18s %6.2f\n", m.c_str(), r.slopes.count(m) ? r.slopes.at(m) : NAN);
         out << buf;
     }

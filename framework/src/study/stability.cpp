@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "clothlab/core/input_error.h"
+#include "clothlab/sim/run.h"
 #include "clothlab/sim/simulation.h"
 #include "clothlab/study/plot.h"
 #include "clothlab/study/theory.h"
@@ -18,14 +19,7 @@
 namespace clothlab {
 namespace {
 
-double energyOf(const Simulation& sim, bool* found) {
-    for (const Metric& m : sim.metrics())
-        if (m.name == "energy") return *found = true, m.value;
-    *found = false;
-    return 0.0;
-}
-
-Scene withMethod(Scene s, const std::string& method, double dt) {
+Scene withMethod(Scene s, Method method, double dt) {
     s.solver.method = method;
     s.solver.dt = dt;
     return s;
@@ -41,16 +35,16 @@ std::string fmt(double x, int precision = 3) {
 
 StabilityVerdict classifyStability(const Scene& scene, const StabilityCriteria& criteria) {
     StabilityVerdict v;
-    auto sim = makeSimulation(scene);
-    const State& s = sim->state();
     // Scales: extent L of the initial positions, total free mass, initial energy.
-    const double extent = s.size() > 0 ? (s.x.rowwise().maxCoeff() - s.x.rowwise().minCoeff()).norm() : 0.0;
+    const State s0 = makeSimulation(scene)->state();
+    const double extent = s0.size() > 0 ? (s0.x.rowwise().maxCoeff() - s0.x.rowwise().minCoeff()).norm() : 0.0;
     double mass = 0.0;
-    for (int i = 0; i < s.size(); ++i) mass += s.w[i] > 0.0 ? 1.0 / s.w[i] : 0.0;
-    bool has_energy = false;
-    const double e0 = energyOf(*sim, &has_energy);
+    for (int i = 0; i < s0.size(); ++i) mass += s0.w[i] > 0.0 ? 1.0 / s0.w[i] : 0.0;
+    Scene bounded = scene;
+    bounded.report.blowup = 1e3 * (extent + 1.0);  // a blow-up long before the numbers overflow
+    auto sim = makeSimulation(bounded);
+    const double e0 = sim->energy();
     const double e_scale = std::max({std::abs(e0), mass * scene.forces.gravity.norm() * extent, 1e-12});
-    const double bound = 1e3 * (extent + 1.0);
     const long long check_every = std::max<long long>(1, criteria.steps / 100);
     auto unstable = [&](const std::string& why) {
         v.stable = false;
@@ -58,12 +52,9 @@ StabilityVerdict classifyStability(const Scene& scene, const StabilityCriteria& 
         return v;
     };
     for (v.steps = 1; v.steps <= criteria.steps; ++v.steps) {
-        sim->step();
-        if (!s.isFinite()) return unstable("NaN or Inf");
-        if (s.x.colwise().norm().maxCoeff() > bound) return unstable("left |x| < " + fmt(bound) + " m");
-        if (has_energy && (v.steps % check_every == 0 || v.steps == criteria.steps)) {
-            bool found = false;
-            const double growth = (energyOf(*sim, &found) - e0) / e_scale;
+        if (const std::string why = stepAndCheck(*sim, v.steps); !why.empty()) return unstable(why);
+        if (v.steps % check_every == 0 || v.steps == criteria.steps) {
+            const double growth = (sim->energy() - e0) / e_scale;
             v.energy_growth = std::max(v.energy_growth, growth);
             if (!std::isfinite(growth)) return unstable("energy NaN or Inf");
             if (growth > criteria.energy_factor) return unstable("energy grew by " + fmt(growth) + " E_scale");
@@ -87,14 +78,14 @@ StabilityResult stabilitySweep(const Scene& scene, const StabilityOptions& o) {
     r.k_ref = sceneStiffness(scene);
     r.omega_ref = maxAngularFrequency(scene);
     {
-        const State s = makeSimulation(withMethod(scene, "symplectic_euler", scene.solver.dt))->state();
+        const State s = makeSimulation(withMethod(scene, Method::SymplecticEuler, scene.solver.dt))->state();
         r.min_mass = std::numeric_limits<double>::infinity();
         for (int i = 0; i < s.size(); ++i) if (s.w[i] > 0.0) r.min_mass = std::min(r.min_mass, 1.0 / s.w[i]);
     }
     const std::vector<double> ks = logSpace(o.k_min, o.k_max, o.k_count), dts = logSpace(o.dt_min, o.dt_max, o.dt_count);
     const int total = static_cast<int>(o.methods.size() * ks.size() * dts.size());
     int done = 0;
-    for (const std::string& method : o.methods)
+    for (Method method : o.methods)
         for (double k : ks) {
             const Scene sk = withStiffness(scene, k);
             const double omega = r.k_ref > 0.0 ? r.omega_ref * std::sqrt(k / r.k_ref) : 0.0;
@@ -102,13 +93,13 @@ StabilityResult stabilitySweep(const Scene& scene, const StabilityOptions& o) {
                 StabilityPoint p{method, k, dt, omega, {}};
                 p.verdict = classifyStability(withMethod(sk, method, dt), o.criteria);
                 r.points.push_back(p);
-                if (o.progress) o.progress(++done, total, method);
+                if (o.progress) o.progress(++done, total, methodName(method));
             }
         }
     return r;
 }
 
-double measureCriticalDt(const Scene& scene, const std::string& method, double dt_lo, double dt_hi,
+double measureCriticalDt(const Scene& scene, Method method, double dt_lo, double dt_hi,
                          const StabilityCriteria& criteria, double rel_tol) {
     auto stable = [&](double dt) { return classifyStability(withMethod(scene, method, dt), criteria).stable; };
     if (!stable(dt_lo)) return -1.0;
@@ -123,24 +114,24 @@ double measureCriticalDt(const Scene& scene, const std::string& method, double d
 void writeStabilityCsv(const std::string& path, const StabilityResult& r) {
     std::ofstream out(path);
     if (!out) throw InputError(path, "(file)", "cannot write the file");
-    out << std::setprecision(10) << "method,k,dt,omega_max_dt,stable,steps,energy_growth,reason\n";
+    out << std::setprecision(10) << "method,k [N/m],dt [s],omega_max_dt [1],stable,steps,energy_growth [E_scale],reason\n";
     for (const StabilityPoint& p : r.points)
-        out << p.method << "," << p.k << "," << p.dt << "," << p.omega_max * p.dt << "," << (p.verdict.stable ? 1 : 0) << ","
+        out << methodName(p.method) << "," << p.k << "," << p.dt << "," << p.omega_max * p.dt << "," << (p.verdict.stable ? 1 : 0) << ","
             << p.verdict.steps << "," << p.verdict.energy_growth << ",\"" << p.verdict.reason << "\"\n";
 }
 
 void printStabilityTable(std::ostream& out, const StabilityResult& r) {
-    out << "stability map of " << r.scene << " (model " << r.model << "): '.' stable, '#' unstable, "
+    out << "stability map of " << r.scene << " (model " << modelName(r.model) << "): '.' stable, '#' unstable, "
         << "'+'/'x' where theory disagrees (stable/unstable measured)\n"
         << "omega_max = " << fmt(r.omega_ref, 4) << " rad/s at k = " << fmt(r.k_ref, 4)
         << " N/m (largest eigenvalue of M^-1 K; scales with sqrt(k))\n";
     std::vector<std::string> methods;
     for (const auto& p : r.points)
-        if (methods.empty() || methods.back() != p.method) methods.push_back(p.method);
+        if (methods.empty() || methods.back() != methodName(p.method)) methods.push_back(methodName(p.method));
     for (const std::string& m : methods) {
         std::vector<double> ks, dts;
         for (const auto& p : r.points)
-            if (p.method == m) {
+            if (methodName(p.method) == m) {
                 if (std::find(ks.begin(), ks.end(), p.k) == ks.end()) ks.push_back(p.k);
                 if (std::find(dts.begin(), dts.end(), p.dt) == dts.end()) dts.push_back(p.dt);
             }
@@ -151,12 +142,12 @@ void printStabilityTable(std::ostream& out, const StabilityResult& r) {
             std::snprintf(buf, sizeof buf, "%10.3g  ", *dt);
             out << buf;
             for (const auto& p : r.points) {
-                if (p.method != m || p.dt != *dt) continue;
-                const double limit = theoreticalCriticalDt(m, p.omega_max);
+                if (methodName(p.method) != m || p.dt != *dt) continue;
+                const double limit = theoreticalCriticalDt(p.method, p.omega_max);
                 const bool known = limit >= 0.0 && p.omega_max > 0.0;
                 const bool theory_stable = p.dt < limit;
                 char c = p.verdict.stable ? '.' : '#';
-                if (known && m != "explicit_euler") {
+                if (known && p.method != Method::ExplicitEuler) {
                     ++cells;
                     if (theory_stable == p.verdict.stable) ++agree;
                     else c = p.verdict.stable ? '+' : 'x';
@@ -165,15 +156,24 @@ void printStabilityTable(std::ostream& out, const StabilityResult& r) {
             }
             out << "\n";
         }
-        if (m == "explicit_euler")
-            out << "theory: undamped explicit Euler grows by sqrt(1 + omega^2 dt^2) per step - unstable for every dt; "
-                   "the map shows where it grew beyond the energy factor within the run\n";
-        else if (m == "symplectic_euler" || m == "velocity_verlet")
-            out << "theory: stable iff omega_max dt < 2 (one spring: k < 4 m / dt^2); agrees in " << agree << " of " << cells << " cells\n";
-        else if (m == "rk4")
-            out << "theory: stable iff omega_max dt < 2 sqrt(2); agrees in " << agree << " of " << cells << " cells\n";
-        else if (m == "implicit_euler")
-            out << "theory: stable for every dt (amplitude x 1/sqrt(1 + omega^2 dt^2) per step); agrees in " << agree << " of " << cells << " cells\n";
+        switch (*parseMethod(m)) {
+            case Method::ExplicitEuler:
+                out << "theory: undamped explicit Euler grows by sqrt(1 + omega^2 dt^2) per step - unstable for every dt; "
+                       "the map shows where it grew beyond the energy factor within the run\n";
+                break;
+            case Method::SymplecticEuler:
+            case Method::VelocityVerlet:
+                out << "theory: stable iff omega_max dt < 2 (one spring: k < 4 m / dt^2); agrees in " << agree << " of " << cells << " cells\n";
+                break;
+            case Method::Rk4:
+                out << "theory: stable iff omega_max dt < 2 sqrt(2); agrees in " << agree << " of " << cells << " cells\n";
+                break;
+            case Method::ImplicitEuler:
+                out << "theory: stable for every dt (amplitude x 1/sqrt(1 + omega^2 dt^2) per step); agrees in " << agree << " of " << cells << " cells\n";
+                break;
+            case Method::Pbd:
+            case Method::Xpbd: break;
+        }
     }
     out << "\nProvot's estimate: k_crit = m pi^2 / dt^2 (the slides print m dt^2 / pi^2 - upside down)";
     if (std::isfinite(r.min_mass)) out << "; here m = " << fmt(r.min_mass) << " kg";
@@ -183,13 +183,13 @@ void printStabilityTable(std::ostream& out, const StabilityResult& r) {
 std::vector<std::string> plotStability(const std::string& dir, const StabilityResult& r) {
     std::vector<std::string> methods;
     for (const auto& p : r.points)
-        if (methods.empty() || methods.back() != p.method) methods.push_back(p.method);
+        if (methods.empty() || methods.back() != methodName(p.method)) methods.push_back(methodName(p.method));
     // One data file per method: k dt stable
     for (const std::string& m : methods) {
         std::ofstream d(dir + "/stability_" + m + ".dat");
         d << std::setprecision(10) << "# k dt stable\n";
         for (const auto& p : r.points)
-            if (p.method == m) d << p.k << " " << p.dt << " " << (p.verdict.stable ? 1 : 0) << "\n";
+            if (methodName(p.method) == m) d << p.k << " " << p.dt << " " << (p.verdict.stable ? 1 : 0) << "\n";
     }
     const std::string w = fmt(r.omega_ref, 10), kr = fmt(r.k_ref, 10);
     double k_lo = INFINITY, k_hi = 0, dt_lo = INFINITY, dt_hi = 0;
@@ -223,7 +223,7 @@ std::vector<std::string> plotStability(const std::string& dir, const StabilityRe
     const int n = static_cast<int>(methods.size()), cols = std::min(n, 3), rows = (n + cols - 1) / cols;
     all << "cd '" << dir << "'\nset terminal pngcairo size " << 400 * cols << "," << 380 * rows + 30 << " font ',9'\n"
         << "set output 'stability.png'\n" << common.str() << "set multiplot layout " << rows << "," << cols
-        << " title '" << r.model << ": stability maps (" << r.scene << ")' noenhanced\n";
+        << " title '" << modelName(r.model) << ": stability maps (" << r.scene << ")' noenhanced\n";
     for (const std::string& m : methods) all << panel(m);
     all << "unset multiplot\n";
     if (runGnuplot(dir + "/stability.gp", all.str())) written.push_back(dir + "/stability.png");

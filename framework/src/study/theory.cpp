@@ -13,10 +13,9 @@
 namespace clothlab {
 namespace {
 MassSpringModel modelOf(const Scene& scene) {
-    if (scene.model == "spring") return makeSingleSpring(scene.spring);
-    if (scene.model == "chain") return makeChain(scene.chain);
-    if (scene.model == "cloth") return makeCloth(scene);
-    throw InputError(scene.file, "model", "no mass-spring model for \"" + scene.model + "\"");
+    if (scene.model == Model::Spring) return makeSingleSpring(scene.spring);
+    if (scene.model == Model::Chain) return makeChain(scene.chain);
+    return makeCloth(scene);
 }
 }  // namespace
 
@@ -59,19 +58,24 @@ double maxAngularFrequency(const Scene& scene) {
     return std::sqrt(std::max(0.0, lambda));
 }
 
-double theoreticalCriticalDt(const std::string& method, double omega) {
-    if (method == "symplectic_euler" || method == "velocity_verlet") return 2.0 / omega;
-    if (method == "rk4") return 2.0 * std::sqrt(2.0) / omega;
-    if (method == "implicit_euler") return std::numeric_limits<double>::infinity();
-    if (method == "explicit_euler") return 0.0;
+double theoreticalCriticalDt(Method method, double omega) {
+    switch (method) {
+        case Method::SymplecticEuler:
+        case Method::VelocityVerlet: return 2.0 / omega;
+        case Method::Rk4: return 2.0 * std::sqrt(2.0) / omega;
+        case Method::ImplicitEuler: return std::numeric_limits<double>::infinity();
+        case Method::ExplicitEuler: return 0.0;
+        case Method::Pbd:
+        case Method::Xpbd: break;
+    }
     return -1.0;
 }
 
 double provotCriticalStiffness(double m, double dt) { return m * M_PI * M_PI / (dt * dt); }
 
 double sceneStiffness(const Scene& scene) {
-    if (scene.model == "spring") return scene.spring.k;
-    if (scene.model == "chain") return scene.chain.k;
+    if (scene.model == Model::Spring) return scene.spring.k;
+    if (scene.model == Model::Chain) return scene.chain.k;
     for (const SpringGroup* g : {&scene.springs.structural, &scene.springs.shear, &scene.springs.bending})
         if (g->enabled) return g->k;
     return 0.0;
@@ -79,8 +83,8 @@ double sceneStiffness(const Scene& scene) {
 
 Scene withStiffness(const Scene& scene, double k) {
     Scene s = scene;
-    if (s.model == "spring") s.spring.k = k;
-    else if (s.model == "chain") s.chain.k = k;
+    if (s.model == Model::Spring) s.spring.k = k;
+    else if (s.model == Model::Chain) s.chain.k = k;
     else {
         const double k_old = sceneStiffness(scene);
         const double factor = k_old > 0.0 ? k / k_old : 1.0;

@@ -4,12 +4,42 @@
 /// A scene names only what it uses; the simulation built from it runs only those parts.
 /// Scenes are JSON files (see io/scene_json.h and docs/scenes.md); every field has a default.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "clothlab/core/types.h"
 
 namespace clothlab {
+
+/// What is simulated (scene field `model`).
+enum class Model {
+    Spring,  ///< "spring": one particle on one spring (stage 01)
+    Chain,   ///< "chain": particles joined in a line by springs (stage 02's forces)
+    Cloth    ///< "cloth": a grid of particles (stages 02-06)
+};
+
+/// How a scene is stepped (scene field `solver.method`).
+enum class Method {
+    ExplicitEuler,    ///< "explicit_euler" (stage 01, task 1.3)
+    SymplecticEuler,  ///< "symplectic_euler" (stage 01, task 1.4)
+    VelocityVerlet,   ///< "velocity_verlet" (stage 01, task 1.5)
+    Rk4,              ///< "rk4": classical Runge-Kutta (framework)
+    ImplicitEuler,    ///< "implicit_euler": linearised backward Euler, Baraff & Witkin 1998 (framework)
+    Pbd,              ///< "pbd": Position Based Dynamics, Müller et al. 2007 (stages 03-06)
+    Xpbd              ///< "xpbd": extended PBD with compliance, Macklin et al. 2016 (framework)
+};
+
+/// The scene-file name of a model, e.g. "cloth".
+const char* modelName(Model m);
+/// The scene-file name of a method, e.g. "symplectic_euler".
+const char* methodName(Method m);
+/// The method called `name` in a scene file, or nothing for an unknown name.
+std::optional<Method> parseMethod(const std::string& name);
+/// Every method, in the order of the course.
+const std::vector<Method>& allMethods();
+/// True for the position-based methods (pbd, xpbd), false for the force-based ones.
+bool isPositionBased(Method m);
 
 /// "spring": one particle hanging from a fixed point (stage 01).
 struct SingleSpringSpec {
@@ -97,21 +127,26 @@ struct Collider {
 /// External forces.
 struct ForcesSpec {
     Vec3 gravity{0, -9.81, 0};  ///< gravitational acceleration g, m/s²
-    double damping = 0.0;       ///< global velocity damping: force -c v (N s/m per particle, MSS) or PBD kDamping in [0, 1]
+    double air_damping = 0.0;   ///< air damping c of the force-based methods: force −c v_i on every particle, N s/m
     Vec3 wind{0, 0, 0};         ///< wind velocity, m/s (zero: no wind pass)
     double drag = 1.0;          ///< wind drag coefficient, N s/m² (force per unit area and unit relative velocity)
 };
 
+/// Settings only the position-based methods use.
+struct PbdSpec {
+    double damping = 0.0;       ///< k_damping of dampVelocities (line (6)), dimensionless, in [0, 1]
+};
+
 /// How the scene is stepped.
 struct SolverSpec {
-    std::string method = "symplectic_euler";  ///< explicit_euler, symplectic_euler, velocity_verlet, rk4, implicit_euler, pbd, xpbd
+    Method method = Method::SymplecticEuler;  ///< the integrator or solver
     double dt = 1e-3;       ///< time step Δt, s
     int steps = 1000;       ///< number of steps of `./lab run`
     int iterations = 10;    ///< PBD solver iterations per step
     int substeps = 1;       ///< PBD substeps per step
     double thickness = 0.01;///< collision thickness h, m
     /// PBD bending sweep: "exercise" calls exercise 5.2 per stencil (the student's or the reference
-    /// code); "batched" the vectorised reference kernel of solutions/kernels (instructor copy only)
+    /// code); any other name is a sweep registered with registerBendingSweep() (sim/extensions.h)
     std::string bendingKernel = "exercise";
 };
 
@@ -133,15 +168,16 @@ struct ViewSpec {
 struct Scene {
     std::string file;            ///< where it was loaded from
     std::string description;     ///< one line for the report
-    std::string model = "spring";///< "spring", "chain" or "cloth"
-    SingleSpringSpec spring;     ///< used when model == "spring"
-    ChainSpec chain;             ///< used when model == "chain"
-    ClothSpec cloth;             ///< used when model == "cloth"
+    Model model = Model::Spring; ///< what is simulated
+    SingleSpringSpec spring;     ///< used when model is Model::Spring
+    ChainSpec chain;             ///< used when model is Model::Chain
+    ClothSpec cloth;             ///< used when model is Model::Cloth
     ClothSprings springs;        ///< mass-spring network (force-based methods on a cloth)
     ProvotSpec provot;           ///< strain limiting for the mass-spring network
     ClothConstraints constraints;///< position-based constraints (pbd, xpbd)
     std::vector<Collider> colliders; ///< static colliders
-    ForcesSpec forces;           ///< gravity, damping, wind
+    ForcesSpec forces;           ///< gravity, air damping, wind
+    PbdSpec pbd;                 ///< dampVelocities (pbd, xpbd)
     SolverSpec solver;           ///< method and step
     ReportSpec report;           ///< report settings
     ViewSpec view;               ///< camera of the renderer and the app

@@ -12,16 +12,16 @@
 #pragma once
 #include <functional>
 
+#include "clothlab/core/state.h"
 #include "clothlab/core/types.h"
 
 namespace clothlab {
 
-/// The particles of a PBD simulation (slides: Massepartikel with x_i, p_i, w_i, v_i).
-struct PbdParticles {
-    Matrix3X x;  ///< positions x_i, 3 x N, m
+/// The particles of a PBD simulation (slides: Massepartikel with x_i, p_i, w_i, v_i): the State
+/// (positions x_i in m, velocities v_i in m/s, inverse masses w_i = 1/m_i in 1/kg with w_i = 0 for a
+/// pinned particle, time t in s) plus the predicted positions p_i.
+struct PbdParticles : State {
     Matrix3X p;  ///< predicted positions p_i, 3 x N, m (scratch space of the step)
-    Matrix3X v;  ///< velocities v_i, 3 x N, m/s
-    VectorX w;   ///< inverse masses w_i = 1/m_i, N, 1/kg; w_i = 0: pinned (never moves)
 };
 
 /// What one PBD step calls besides the student's own code. Every callback may be empty

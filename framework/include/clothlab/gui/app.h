@@ -116,6 +116,7 @@ private:
     std::deque<float> energy_, error_, step_ms_;  ///< plot histories
     std::string error_name_;             ///< which metric the error plot shows
     double last_step_ms_ = 0.0;          ///< wall time of the last step, ms
+    long long steps_ = 0;                ///< steps since the last reset
     std::vector<StageInfo> stages_;      ///< stages of this build
     double wave_t_ = 0.0;                ///< time of the benchmark wave, s
     bool save_view_ = false;             ///< "Save PNG" pressed: write the 3-D view on the next frame

@@ -18,7 +18,7 @@ void printReportRow(std::ostream& out, const ReportRow& row);
 /// passes that ran (wall time, calls, share).
 void printSummary(std::ostream& out, const Simulation& sim, const RunResult& result);
 
-/// Writes the report rows as CSV: `step,t,wall,<metric>,...`.
+/// Writes the report rows as CSV with units in the header: `step,t [s],wall [s],<metric> [<unit>],...`.
 /// @throws InputError if the file cannot be written
 void writeReportCsv(const std::string& path, const RunResult& result);
 

@@ -28,7 +28,4 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
 Scene parseScene(const std::string& text, const std::string& file,
                  const std::vector<std::string>& overrides = {});
 
-/// Names of all solver methods a scene may choose (solver.method).
-const std::vector<std::string>& solverMethods();
-
 }  // namespace clothlab

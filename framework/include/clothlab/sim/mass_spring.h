@@ -22,7 +22,8 @@ struct MassSpringModel {
 /// The single spring: particle 0 is the pinned anchor, particle 1 hangs from it.
 MassSpringModel makeSingleSpring(const SingleSpringSpec& spec);
 
-/// A chain of n particles along `direction`, links of rest length l0, particle 0 pinned.
+/// A chain of n particles along `direction`, links of rest length l0, particle 0 pinned
+/// (a one-dimensional mass-spring network: it runs on stage 02's force functions).
 MassSpringModel makeChain(const ChainSpec& spec);
 
 /// A cloth (stage 02): particles from makeGridState(), springs from makeClothSprings()
@@ -33,43 +34,58 @@ MassSpringModel makeCloth(const Scene& scene);
 /// spring's line (start − anchor, initial velocity and gravity all parallel).
 std::optional<DampedOscillator> singleSpringAnalytic(const Scene& scene);
 
-/// Time integration of a mass-spring model: force terms (gravity, damping, springs, ...)
-/// summed into F(x, v), one integrator step (explicit_euler, symplectic_euler, velocity_verlet,
-/// rk4 or implicit_euler), then, if the scene enables it, Provot's strain limit.
-/// On a cloth the force terms are the stage-02 functions addClothSpringForces() and
-/// addClothExternalForces(); on a spring or chain the framework's forces.h.
+/// Time integration of a mass-spring model (Masse-Feder-System), one step:
+/// \f[ (1)\ \vec F(\vec x, \vec v) = \textstyle\sum \text{force passes} \qquad
+///     (2)\ \vec x, \vec v \leftarrow \text{one step of the integrator on } \vec F \qquad
+///     (3)\ \text{Provot's strain limit (if enabled)} \f]
+/// The force passes are the students' code: on the single spring stage 01's hookeForce() and
+/// springDampingForce() on the hanging particle; on a chain or cloth stage 02's
+/// addClothExternalForces() (gravity, air damping) and addClothSpringForces(). The integrators are
+/// stage 01's (explicit_euler, symplectic_euler, velocity_verlet) and the framework's rk4 and
+/// implicit_euler.
 class MassSpringSimulation : public Simulation {
 public:
     /// A force term: adds its forces into f.
     using ForceTerm = std::function<void(const Matrix3X& x, const Matrix3X& v, Matrix3X& f)>;
 
-    /// @param scene  a scene with model spring, chain or cloth
+    /// @param scene  a scene with model spring, chain or cloth and a force-based method
     /// @param model  its particles and springs
     MassSpringSimulation(const Scene& scene, MassSpringModel model);
-    /// Adds a force pass named `name` (shown in the timing report).
-    void addForce(const std::string& name, ForceTerm term);
+    /// One step (see the class comment).
+    /// @throws SolverFailure when implicit Euler cannot solve its linear system (the state is unchanged)
     void step() override;
-    std::vector<Metric> metrics() const override;
-    /// Total energy: kinetic + gravity + springs, J.
-    double energy() const;
+    const State& state() const override { return state_; }
+    State& state() override { return state_; }
     /// The springs of the model.
     const std::vector<Spring>& springs() const { return springs_; }
+    /// Distance between the hanging particle and the analytic solution, m (0 without one).
+    double analyticError() const;
+    /// Largest analyticError() after any step so far, m.
+    double maxAnalyticError() const { return max_error_; }
 
 protected:
-    /// One step of scene().solver.method on the force field F(x, v).
-    void integrate(const ForceField& field, double dt);
+    double elasticEnergy() const override;
+    /// error and max_error against the analytic solution, when the scene has one.
+    void addMetrics(std::vector<Metric>& m) const override;
 
+private:
+    /// Adds a force pass named `name` (shown in the timing report).
+    void addForce(const std::string& name, ForceTerm term);
+    /// Step (2): one step of scene().solver.method on the force field F(x, v).
+    void integrate(double dt);
+
+    State state_;                          ///< particles
     std::vector<Spring> springs_;          ///< the springs
     std::vector<std::pair<int, ForceTerm>> forces_;  ///< (pass id, term)
+    ForceField field_;                     ///< F(x, v): the sum of the force passes, each timed
     int integrate_pass_ = -1;              ///< pass id of the integrator
     int provot_pass_ = -1;                 ///< pass id of Provot's strain limit, −1 if off
     Rk4Workspace rk4_;                     ///< buffers of rk4Step()
     ImplicitEulerSolver implicit_;         ///< the implicit Euler stepper
-    double initial_energy_ = 0.0;          ///< E at t = 0, J
     std::optional<DampedOscillator> analytic_;  ///< exact solution, when there is one
     Vec3 anchor_{0, 0, 0};                 ///< fixed end of the 1-D solution's line, m
     Vec3 axis_{0, -1, 0};                  ///< unit direction of that line
-    mutable double max_error_ = 0.0;       ///< largest error against the analytic solution so far, m
+    double max_error_ = 0.0;               ///< largest error against the analytic solution after any step, m
 };
 
 }  // namespace clothlab

@@ -26,6 +26,20 @@ struct RunResult {
     std::vector<ReportRow> rows;  ///< one row every `every` steps and one at the end
 };
 
+/// Why a state can no longer be trusted, or "" when it can: a position or velocity is NaN or
+/// infinite, or a particle left the ball |x| < bound (report.blowup). The one instability check of
+/// every program (run, render, app, studies).
+/// @param s      the state
+/// @param bound  radius of the region the particles must stay in, m
+std::string instabilityReason(const State& s, double bound);
+
+/// Takes one step and checks it: "" when the step went well, else the one message every program
+/// prints, "unstable at step N (t = T s): <reason>", for a blow-up (instabilityReason()) or a step
+/// the method could not take (SolverFailure).
+/// @param sim   the simulation
+/// @param step  the number of this step (1 for the first), for the message
+std::string stepAndCheck(Simulation& sim, long long step);
+
 /// Steps `steps` times (or until the state turns NaN/Inf or leaves the ball of radius
 /// scene.report.blowup), recording a report row every `every` steps.
 /// @param sim     the simulation

@@ -2,6 +2,7 @@
 /// @brief A running simulation built from a scene: state, step, metrics and pass timings.
 #pragma once
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "clothlab/core/scene.h"
 #include "clothlab/core/state.h"
 #include "clothlab/sim/pass_timer.h"
+#include "clothlab/sim/strain.h"
 
 namespace clothlab {
 
@@ -17,10 +19,22 @@ namespace clothlab {
 struct Metric {
     std::string name;  ///< short name, e.g. "energy_drift"
     double value;      ///< its value
-    std::string unit;  ///< unit, e.g. "J", "m", "%"
+    std::string unit;  ///< its unit, e.g. "J", "m", "1" (dimensionless fraction), "rad"
+};
+
+/// A step the method could not take, e.g. implicit Euler's linear solve did not converge.
+/// Thrown by Simulation::step(); the state is then left as it was before the step.
+struct SolverFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 /// Base of every method. A subclass assembles only the passes its scene uses.
+///
+/// The report's measures are defined once, here, for every method:
+/// - `energy` = kinetic + gravitational + elastic energy (J), `energy_drift` = energy − energy at t = 0 (J);
+/// - `max_strain`, `rms_strain` (1): edgeStrain() of the cloth's mesh edges (or the springs of a chain),
+///   rest lengths from the initial shape;
+/// then whatever the method adds (error against the analytic solution, bending error, penetration).
 class Simulation {
 public:
     /// @param scene  the validated scene (copied)
@@ -28,14 +42,20 @@ public:
     virtual ~Simulation() = default;
 
     /// Advances the state by one time step Δt = scene().solver.dt.
+    /// @throws SolverFailure when the method cannot take the step
     virtual void step() = 0;
-    /// The scene's error metrics for the current state (energy and drift, error against an analytic solution, ...).
-    virtual std::vector<Metric> metrics() const = 0;
+
+    /// The report's metrics for the current state (see the class comment).
+    std::vector<Metric> metrics() const;
+    /// Kinetic + gravitational + elastic energy, J.
+    double energy() const;
+    /// Strain of the measured edges (cloth: mesh edges; chain and spring: the springs).
+    EdgeStrain strain() const;
 
     /// Current particle state.
-    const State& state() const { return state_; }
+    virtual const State& state() const = 0;
     /// Current particle state, writable (e.g. for dragging a particle in the app).
-    State& state() { return state_; }
+    virtual State& state() = 0;
     /// Wall time per pass so far.
     const PassTimer& timer() const { return timer_; }
     /// The scene this simulation was built from.
@@ -46,11 +66,23 @@ public:
     const std::vector<Eigen::Vector3i>& triangles() const { return triangles_; }
 
 protected:
+    /// Call at the end of a subclass constructor, once state(), edges_ and triangles_ are set:
+    /// takes the rest lengths of the strain edges and the initial energy from the initial state.
+    void initMeasures();
+    /// Elastic energy of the method's springs (0 for position-based methods), J.
+    virtual double elasticEnergy() const { return 0.0; }
+    /// Appends the method's own metrics after the common ones.
+    virtual void addMetrics(std::vector<Metric>& m) const { (void)m; }
+
     Scene scene_;                               ///< the scene
-    State state_;                               ///< particles
     PassTimer timer_;                           ///< pass timings
     std::vector<Eigen::Vector2i> edges_;        ///< for display
     std::vector<Eigen::Vector3i> triangles_;    ///< for display
+
+private:
+    std::vector<Eigen::Vector2i> strainEdges_;  ///< edges whose strain is reported
+    std::vector<double> strainRest_;            ///< their rest lengths, m
+    double initialEnergy_ = 0.0;                ///< energy at t = 0, J
 };
 
 /// Builds the simulation for a scene's model and solver.method.

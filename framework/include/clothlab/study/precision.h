@@ -22,12 +22,13 @@ namespace clothlab {
 /// Settings of a work-precision study.
 struct PrecisionOptions {
     /// Methods to compare, one line each (any solver.method makeSimulation() accepts, e.g. later "pbd").
-    std::vector<std::string> methods = {"explicit_euler", "symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"};
+    std::vector<Method> methods = {Method::ExplicitEuler, Method::SymplecticEuler, Method::VelocityVerlet, Method::Rk4,
+                                   Method::ImplicitEuler};
     double dt_min = 1e-4;       ///< smallest time step, s
     double dt_max = 1e-2;       ///< largest time step, s
     int dt_count = 7;           ///< time steps, log-spaced; each is rounded so that end_time / dt is a whole number
     double end_time = 1.0;      ///< simulated time T at which the error is measured, s
-    std::string reference_method = "rk4";  ///< reference run when there is no analytic solution ("xpbd" for pbd/xpbd scenes)
+    Method reference_method = Method::Rk4;  ///< reference run when there is no analytic solution ("xpbd" for pbd/xpbd scenes)
     double reference_dt = 0.0;  ///< its time step, s (0: dt_min / 8)
     /// Position-based methods: the budgets b (iterations or substeps per frame) of the sweep.
     std::vector<int> budgets = {1, 2, 5, 10, 20, 50, 100};
@@ -70,8 +71,6 @@ struct PrecisionResult {
     bool position_based = false;    ///< some run is position-based (cost axis = projections per second)
 };
 
-/// True for the position-based methods "pbd" and "xpbd".
-bool isPositionBased(const std::string& method);
 
 /// The scene of one position-based run: `method` with `iterations` per substep and `substeps` per
 /// frame at the scene's frame step Δt. PBD's stiffnesses k ∈ [0, 1] and the damping k_damping act once
@@ -79,10 +78,10 @@ bool isPositionBased(const std::string& method);
 /// i.e. the same effect per frame, and every configuration simulates the same cloth (k = 1 stays 1;
 /// XPBD's compliances α are material constants and stay).
 /// @param scene       the base scene (model "cloth")
-/// @param method      "pbd" or "xpbd"
+/// @param method      Method::Pbd or Method::Xpbd
 /// @param iterations  iterations per substep, >= 1
 /// @param substeps    substeps per frame, >= 1
-Scene positionBasedScene(const Scene& scene, const std::string& method, int iterations, int substeps);
+Scene positionBasedScene(const Scene& scene, Method method, int iterations, int substeps);
 
 /// The reference positions at time T: the analytic solution for the single-spring scene when it has
 /// one (singleSpringAnalytic()), else a run of `reference_method` at `reference_dt`; for a
@@ -113,7 +112,7 @@ double convergenceSlope(const std::vector<PrecisionRun>& runs, const std::string
 /// @param series  the series, e.g. "pbd substeps"
 double costSlope(const std::vector<PrecisionRun>& runs, const std::string& series);
 
-/// Writes the runs as CSV: `method,dt,steps,error,wall,unstable,series,iterations,substeps,projections_per_s,rms_strain`.
+/// Writes the runs as CSV: `method,dt [s],steps,error [m],wall [s],unstable,series,iterations,substeps,projections_per_s [1/s],rms_strain [1]`.
 /// @throws InputError if the file cannot be written
 void writePrecisionCsv(const std::string& path, const PrecisionResult& result);
 

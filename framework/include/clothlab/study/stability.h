@@ -36,7 +36,8 @@ StabilityVerdict classifyStability(const Scene& scene, const StabilityCriteria& 
 /// Settings of a stability sweep.
 struct StabilityOptions {
     /// Methods to sweep (any solver.method makeSimulation() accepts).
-    std::vector<std::string> methods = {"explicit_euler", "symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"};
+    std::vector<Method> methods = {Method::ExplicitEuler, Method::SymplecticEuler, Method::VelocityVerlet, Method::Rk4,
+                                   Method::ImplicitEuler};
     double k_min = 1.0;      ///< smallest (structural) stiffness, N/m
     double k_max = 1e6;      ///< largest stiffness, N/m
     int k_count = 13;        ///< stiffness values, log-spaced
@@ -50,7 +51,7 @@ struct StabilityOptions {
 
 /// One point of the stability map.
 struct StabilityPoint {
-    std::string method;        ///< solver.method
+    Method method = Method::SymplecticEuler;  ///< solver.method
     double k = 0.0;            ///< stiffness, N/m
     double dt = 0.0;           ///< time step, s
     double omega_max = 0.0;    ///< ω_max at this k, rad/s
@@ -60,7 +61,7 @@ struct StabilityPoint {
 /// A whole stability sweep.
 struct StabilityResult {
     std::string scene;                  ///< scene file
-    std::string model;                  ///< spring, chain or cloth
+    Model model = Model::Spring;        ///< spring, chain or cloth
     double k_ref = 0.0;                 ///< the scene's own stiffness, N/m
     double omega_ref = 0.0;             ///< ω_max at k_ref, rad/s (ω_max(k) = ω_ref √(k / k_ref))
     double min_mass = 0.0;              ///< smallest free particle mass, kg (for Provot's k_krit)
@@ -84,10 +85,10 @@ StabilityResult stabilitySweep(const Scene& scene, const StabilityOptions& optio
 /// @param criteria  what counts as unstable
 /// @param rel_tol   relative width of the final bracket
 /// @return          the geometric mean of the final bracket, s; −1 if dt_lo is unstable, +∞ if dt_hi is stable
-double measureCriticalDt(const Scene& scene, const std::string& method, double dt_lo, double dt_hi,
+double measureCriticalDt(const Scene& scene, Method method, double dt_lo, double dt_hi,
                          const StabilityCriteria& criteria, double rel_tol = 0.01);
 
-/// Writes the sweep as CSV: `method,k,dt,omega_max_dt,stable,steps,energy_growth,reason`.
+/// Writes the sweep as CSV: `method,k [N/m],dt [s],omega_max_dt [1],stable,steps,energy_growth [E_scale],reason`.
 /// @throws InputError if the file cannot be written
 void writeStabilityCsv(const std::string& path, const StabilityResult& result);
 

@@ -33,9 +33,9 @@ double maxAngularFrequency(const Scene& scene);
 /// 2/ω for symplectic_euler and velocity_verlet, 2√2/ω for rk4, +∞ for implicit_euler,
 /// 0 for explicit_euler (unstable for every Δt without damping), and −1 for a method this
 /// table does not know (e.g. position-based methods).
-/// @param method  a solver.method name
+/// @param method  the method
 /// @param omega   angular frequency ω > 0, rad/s
-double theoreticalCriticalDt(const std::string& method, double omega);
+double theoreticalCriticalDt(Method method, double omega);
 
 /// Provot's critical stiffness \f$ k_{krit} = m\,\pi^2/\Delta t^2 \f$, N/m.
 /// @param m   particle mass, kg

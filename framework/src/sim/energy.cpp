@@ -1,24 +1,6 @@
-#include "clothlab/sim/forces.h"
-
-#include "clothlab/exercise/01_hooke.h"
+#include "clothlab/sim/energy.h"
 
 namespace clothlab {
-
-void addGravityForces(const VectorX& w, const Vec3& g, Matrix3X& f) {
-    for (Eigen::Index i = 0; i < w.size(); ++i)
-        if (w[i] > 0.0) f.col(i) += g / w[i];
-}
-
-void addVelocityDamping(const Matrix3X& v, double c, Matrix3X& f) { f -= c * v; }
-
-void addSpringForces(const std::vector<Spring>& springs, const Matrix3X& x, const Matrix3X& v, Matrix3X& f) {
-    for (const Spring& s : springs) {
-        Vec3 force = hookeForce(x.col(s.i), x.col(s.j), s.k, s.l0);
-        if (s.kd > 0.0) force += springDampingForce(x.col(s.i), x.col(s.j), v.col(s.i), v.col(s.j), s.kd);
-        f.col(s.j) += force;
-        f.col(s.i) -= force;
-    }
-}
 
 double kineticEnergy(const VectorX& w, const Matrix3X& v) {
     double e = 0.0;

@@ -1,0 +1,34 @@
+# Extensions: faster implementations that register themselves at the solver's extension point
+# (framework/include/clothlab/sim/extensions.h). The framework never names them; this file links
+# them into the programs. They are solved exercises, so they live in solutions/kernels/ and the
+# student copy (./lab release) has none: there, solver.bending_kernel allows only "exercise".
+#
+# clothlab_kernels: the batched bending kernel (solver.bending_kernel "batched"). An OBJECT library,
+# so that its registering static initialiser is linked into every program that links it.
+# Compiled for speed: vector loops (-fopenmp-simd: `#pragma omp simd` only, no threads), sqrt
+# without errno.
+if(NOT IS_DIRECTORY "${PROJECT_SOURCE_DIR}/solutions/kernels")
+  function(clothlab_link_extensions target)
+  endfunction()
+  return()
+endif()
+
+add_library(clothlab_kernels OBJECT
+  "${PROJECT_SOURCE_DIR}/solutions/kernels/bending_batched.cpp"
+  "${PROJECT_SOURCE_DIR}/solutions/kernels/register_batched.cpp")
+target_include_directories(clothlab_kernels PUBLIC "${PROJECT_SOURCE_DIR}/solutions/kernels")
+target_link_libraries(clothlab_kernels PUBLIC clothlab_headers)
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  target_compile_options(clothlab_kernels PRIVATE -O3 -fno-math-errno -fno-trapping-math -fopenmp-simd)
+endif()
+
+# Links the extensions into a program (called for the CLI, the renderer, the app, the framework
+# tests and the benchmarks).
+function(clothlab_link_extensions target)
+  if(TARGET ${target})
+    target_link_libraries(${target} PRIVATE clothlab_kernels)
+  endif()
+endfunction()
+foreach(_t clothlab clothlab-render clothlab-gui)
+  clothlab_link_extensions(${_t})
+endforeach()

@@ -1,0 +1,54 @@
+#include "clothlab/sim/sweeps.h"
+
+#include "clothlab/exercise/04_distance.h"
+#include "clothlab/sim/xpbd.h"
+
+namespace clothlab {
+
+void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p) {
+    for (const DistanceLink& L : links) {
+        const DistanceCorrection c = projectDistanceConstraint(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, k);
+        p.col(L.i) += c.dp1;
+        p.col(L.j) += c.dp2;
+    }
+}
+
+void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p) {
+    for (const BendingStencil& s : stencils) {
+        const BendingCorrection c = projectBendingConstraint(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4),
+                                                             w[s.i1], w[s.i2], w[s.i3], w[s.i4], s.phi0, k);
+        p.col(s.i1) += c.dp1;
+        p.col(s.i2) += c.dp2;
+        p.col(s.i3) += c.dp3;
+        p.col(s.i4) += c.dp4;
+    }
+}
+
+void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const VectorX& w, double alphaTilde,
+                              std::vector<double>& lambda, Matrix3X& p) {
+    for (size_t k = 0; k < links.size(); ++k) {
+        const DistanceLink& L = links[k];
+        const DistanceCorrection c = projectDistanceXpbd(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, alphaTilde, lambda[k]);
+        p.col(L.i) += c.dp1;
+        p.col(L.j) += c.dp2;
+    }
+}
+
+void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
+                             std::vector<double>& lambda, Matrix3X& p) {
+    for (size_t k = 0; k < stencils.size(); ++k) {
+        const BendingStencil& s = stencils[k];
+        const BendingCorrection c = projectBendingXpbd(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1],
+                                                       w[s.i2], w[s.i3], w[s.i4], s.phi0, alphaTilde, lambda[k]);
+        p.col(s.i1) += c.dp1;
+        p.col(s.i2) += c.dp2;
+        p.col(s.i3) += c.dp3;
+        p.col(s.i4) += c.dp4;
+    }
+}
+
+void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p) {
+    for (const CollisionConstraint& c : contacts) p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
+}
+
+}  // namespace clothlab
