@@ -81,5 +81,15 @@ if [[ $? -eq 1 ]] && grep -q "^error: command line: --dt-min" "$tmp/err"; then o
 "$exe" run "$root/scenes/chain.json" --steps 10 --quiet --dump "$tmp/state.csv" >/dev/null 2>&1
 if [[ "$(head -1 "$tmp/state.csv")" == "i,x,y,z,vx,vy,vz" && $(wc -l <"$tmp/state.csv") -eq 11 ]]; then ok; else bad "dump: $(head -3 "$tmp/state.csv")"; fi
 
+# One meaning per quantity: the same cloth as a mass-spring network and as PBD writes the same
+# strain columns, as fractions with their unit, and a precision study writes its strain in [1].
+for m in symplectic_euler pbd; do
+  "$exe" run "$root/scenes/mfn_hanging.json" --set solver.method=$m --steps 5 --quiet --out "$tmp/csv_$m" >/dev/null 2>&1
+  header=$(head -1 "$tmp/csv_$m/report.csv")
+  if [[ $header == "step,t [s],wall [s],energy [J],energy_drift [J],max_strain [1],rms_strain [1]"* ]]; then ok; else bad "report.csv header ($m): $header"; fi
+  if grep -q '%' "$tmp/csv_$m/report.csv" "$tmp/csv_$m/summary.json"; then bad "percent in the $m report"; else ok; fi
+done
+if grep -q 'rms_strain \[1\]' <(head -1 "$tmp/pp/precision.csv"); then ok; else bad "precision.csv header: $(head -1 "$tmp/pp/precision.csv")"; fi
+
 echo "cli checks: $pass ok, $fail failing"
 [[ $fail -eq 0 ]]
