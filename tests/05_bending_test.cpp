@@ -79,6 +79,25 @@ TEST(Task5_1_BendingGradients, QVectorsAreFiniteDifferenceGradientsOfD) {
     }
 }
 
+TEST(Task5_1_BendingGradients, SinPhiIsAccurateAlsoNearFlat) {
+    // hinge(open) has the dihedral angle phi = open, so sin(phi) = sin(open), up to the rounding of the
+    // positions (relative 1e-11 here). Near flat, sqrt(1 - d^2) cannot be this accurate: d ~ -1 is
+    // rounded to 1e-16, and 1 - d^2 ~ (pi - phi)^2 keeps only a few digits of it.
+    for (double open : {0.3, 1.0, 2.0, 2.9}) {
+        const Stencil s = hinge(open, 0.1);
+        const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
+        EXPECT_NEAR(g.sinPhi, std::sin(open), 1e-12) << "sinPhi must be |n1 x n2| = sin(phi), at phi = " << open;
+    }
+    for (double flatness : {1e-3, 1e-5, 2e-6}) {
+        const double open = kPi - flatness;
+        const Stencil s = hinge(open, -0.2);
+        const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
+        EXPECT_NEAR(g.sinPhi, std::sin(open), 1e-8 * std::sin(open))
+            << "phi = pi - " << flatness << ": sinPhi has a relative error of " << g.sinPhi / std::sin(open) - 1
+            << " (compute it as |n1 x n2|: sqrt(1 - d^2) loses digits near flat, see the header)";
+    }
+}
+
 TEST(Task5_1_BendingGradients, ZeroAreaTriangleIsInvalidNotNaN) {
     const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, 1, 0), d(0.5, -1, 0.2);
     const auto g1 = bendingGradients(a, b, Vec3(2, 0, 0), d);  // p3 on the edge line
@@ -88,6 +107,7 @@ TEST(Task5_1_BendingGradients, ZeroAreaTriangleIsInvalidNotNaN) {
         EXPECT_TRUE(std::isfinite(g.d) && g.q1.allFinite() && g.q2.allFinite() && g.q3.allFinite() && g.q4.allFinite())
             << "a zero-area triangle must not give NaN";
         EXPECT_EQ(g.q1.norm() + g.q2.norm() + g.q3.norm() + g.q4.norm(), 0.0) << "invalid stencil: all q must be zero";
+        EXPECT_EQ(g.sinPhi, 0.0) << "invalid stencil: sinPhi must be zero";
     }
 }
 
@@ -118,6 +138,23 @@ TEST(Task5_2_ProjectBending, ReducesTheErrorForMediumDeviations) {
                 << "rest angle " << phi0 << ", deviation " << dev << ": |C| went from " << std::abs(before) << " to "
                 << std::abs(after);
         }
+    }
+}
+
+TEST(Task5_2_ProjectBending, NearlyFlatStencilFarFromItsRestAngle) {
+    // A crease (rest angle pi - 0.5) pressed nearly flat, only p4 free. Rotating p4 about the edge by an
+    // angle dphi moves it by h4 dphi (h4 = 0.7 m, its distance from the edge), so |grad_p4 C| = 1/h4 and
+    // the PBD step moves p4 by exactly |C| / |grad_p4 C| = |C| h4, however flat the stencil is.
+    const double phi0 = kPi - 0.5, h4 = 0.7;
+    for (double flatness : {1e-4, 1e-5, 2e-6}) {
+        const double open = kPi - flatness;
+        const Stencil s = hinge(open, 0.1);
+        const auto c = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], 0, 0, 0, 1, phi0, 1.0);
+        const double expected = std::abs(open - phi0) * h4;
+        EXPECT_NEAR(c.dp4.norm(), expected, 1e-8 * expected)
+            << "phi = pi - " << flatness << ", rest angle pi - 0.5: |dp4| = " << c.dp4.norm() << " m, relative error "
+            << c.dp4.norm() / expected - 1 << " (sin(phi) as sqrt(1 - d^2) loses digits near flat, see the header)";
+        EXPECT_LT(std::abs(angleAfter(s, c) - phi0), 0.5 * std::abs(open - phi0)) << "the crease must close";
     }
 }
 

@@ -7,8 +7,18 @@
 /// p1–p2; positions are taken relative to p1 (so p1 = 0 in the formulas), with the normals
 /// \f[ \vec n_1 = \frac{\vec p_2\times\vec p_3}{|\vec p_2\times\vec p_3|},\qquad
 ///     \vec n_2 = \frac{\vec p_2\times\vec p_4}{|\vec p_2\times\vec p_4|},\qquad d = \vec n_1\cdot\vec n_2 \f]
-/// and the cost \f$ C = \arccos(d) - \varphi_0 \f$. With this convention a flat stencil
-/// (p3 and p4 on opposite sides of the edge) has d = −1, i.e. φ = π.
+/// the dihedral angle \f$ \varphi = \arccos(d) \f$ and the cost \f$ C = \varphi - \varphi_0 \f$.
+/// With this convention a flat stencil (p3 and p4 on opposite sides of the edge) has d = −1, i.e. φ = π.
+///
+/// Numerically, φ and sin φ are computed as
+/// \f[ \sin\varphi = |\vec n_1\times\vec n_2|,\qquad \varphi = \operatorname{atan2}(\sin\varphi,\ d) \f]
+/// and not as \f$\sqrt{1-d^2}\f$ and arccos(d), which are the same numbers in exact arithmetic.
+/// Cloth is mostly nearly flat, d ≈ −1, and there 1 − d² is the difference of two nearly equal
+/// numbers (cancellation): the rounding error of d (about 1e-16) becomes a relative error of about
+/// 1e-16/(1 − d²) in 1 − d² (1e-6 at φ = π − 1e-5, 1e-4 near the cut-off sin φ = 1e-6), and a crease
+/// pressed flat, far from its rest angle, is moved by 0.1–0.5 m, so by up to 1e-4 m to the wrong place.
+/// \f$|\vec n_1\times\vec n_2|\f$ is computed from the normals directly and keeps a relative error of
+/// about 1e-16/sin φ; atan2 is accurate at every angle, while arccos has an infinite slope at d = ±1.
 #pragma once
 #include <vector>
 
@@ -18,14 +28,15 @@
 
 namespace clothlab {
 
-/// d = n1·n2 and its gradients q_i = ∂d/∂p_i (appendix A of Müller et al. 2007).
+/// d = n1·n2, sin φ and the gradients q_i = ∂d/∂p_i (appendix A of Müller et al. 2007).
 struct BendingGradients {
     double d = -1.0;     ///< n1·n2, clamped to [−1, 1] (dimensionless)
+    double sinPhi = 0.0; ///< sin φ = |n1 × n2| in [0, 1], computed directly, not as sqrt(1 − d²) (dimensionless)
     Vec3 q1{0, 0, 0};    ///< ∂d/∂p1, 1/m
     Vec3 q2{0, 0, 0};    ///< ∂d/∂p2, 1/m
     Vec3 q3{0, 0, 0};    ///< ∂d/∂p3, 1/m
     Vec3 q4{0, 0, 0};    ///< ∂d/∂p4, 1/m
-    bool valid = false;  ///< false for a zero-area triangle (normals undefined): d = −1, all q zero
+    bool valid = false;  ///< false for a zero-area triangle (normals undefined): d = −1, sinPhi = 0, all q zero
 };
 
 /// The corrections of one bending projection.
@@ -42,10 +53,11 @@ struct BendingStencil {
     int i2 = 0;          ///< the other particle of the shared edge
     int i3 = 0;          ///< opposite vertex in the first triangle
     int i4 = 0;          ///< opposite vertex in the second triangle
-    double phi0 = 0.0;   ///< rest angle φ0 = arccos(d) of the initial shape, rad (π: flat)
+    double phi0 = 0.0;   ///< rest angle φ0 = atan2(sin φ, d) = arccos(d) of the initial shape, rad (π: flat)
 };
 
-/// Exercise 5.1 — d = n1·n2 and the q-vectors q_i = ∂d/∂p_i (appendix A), with p_i relative to p1:
+/// Exercise 5.1 — d = n1·n2, \f$\sin\varphi = |\vec n_1\times\vec n_2|\f$ (not \f$\sqrt{1-d^2}\f$:
+/// see the top of this file) and the q-vectors q_i = ∂d/∂p_i (appendix A), with p_i relative to p1:
 /// \f[ \vec q_3 = \frac{\vec n_2\times\vec p_2 + (\vec p_2\times\vec n_1)\,d}{|\vec p_2\times\vec p_3|},\qquad
 ///     \vec q_4 = \frac{\vec n_1\times\vec p_2 + (\vec p_2\times\vec n_2)\,d}{|\vec p_2\times\vec p_4|} \f]
 /// \f[ \vec q_2 = \frac{\vec p_3\times\vec n_2 + (\vec n_1\times\vec p_3)\,d}{|\vec p_2\times\vec p_3|}
@@ -54,21 +66,24 @@ struct BendingStencil {
 /// These are the negatives of the q-vectors printed on the slides and in the paper: the printed
 /// ones are −∂d/∂p_i (checked against finite differences; see the task sheet).
 /// Zero-area triangles (|p2 × p3| or |p2 × p4| below 1e-12 m²) and coincident points: valid = false,
-/// d = −1 and all q zero (never NaN). d is clamped to [−1, 1].
+/// d = −1, sinPhi = 0 and all q zero (never NaN). d is clamped to [−1, 1].
 /// @param p1, p2  the shared edge, m
 /// @param p3, p4  the opposite vertices, m
-/// @return        d, q1..q4, valid
+/// @return        d, sinPhi, q1..q4, valid
 BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4);
 
-/// Exercise 5.2 — projection of the bending constraint C = arccos(d) − φ0.
+/// Exercise 5.2 — projection of the bending constraint C = φ − φ0 with
+/// \f$\varphi = \operatorname{atan2}(\sin\varphi,\ d) = \arccos(d)\f$ (sin φ and d from exercise 5.1).
 ///
 /// The general PBD projection \f$\Delta\vec p_i = -s\,w_i\nabla_{\vec p_i}C\f$ with
 /// \f$ s = C / \sum_j w_j|\nabla_{\vec p_j}C|^2 \f$ and
-/// \f$\nabla_{\vec p_i}C = -\vec q_i/\sqrt{1-d^2}\f$ (q_i = ∂d/∂p_i from exercise 5.1) gives
-/// \f[ \Delta\vec p_i = +\frac{w_i\,\sqrt{1-d^2}\,(\arccos(d)-\varphi_0)}{\sum_j w_j|\vec q_j|^2}\,\vec q_i\;k \f]
-/// The slides print a minus sign here, which is right for their q-vectors (−∂d/∂p_i) and wrong for
+/// \f$\nabla_{\vec p_i}C = -\vec q_i/\sin\varphi\f$ (chain rule: \f$\frac{d}{dd}\arccos d = -1/\sqrt{1-d^2}
+/// = -1/\sin\varphi\f$; q_i = ∂d/∂p_i from exercise 5.1) gives
+/// \f[ \Delta\vec p_i = +\frac{w_i\,\sin\varphi\,(\varphi-\varphi_0)}{\sum_j w_j|\vec q_j|^2}\,\vec q_i\;k \f]
+/// (the slides write \f$\sqrt{1-d^2}\f$ and arccos(d): the same numbers, but inaccurate near flat, see the top
+/// of this file). The slides print a minus sign here, which is right for their q-vectors (−∂d/∂p_i) and wrong for
 /// ours: the two sign flips cancel (see the task sheet). Returns zero corrections, never NaN, when the stencil is not
-/// valid, when 1 − d² < 1e-12 (flat or folded: arccos is not differentiable there), when
+/// valid, when sin φ < 1e-6 (flat or folded, i.e. 1 − d² < 1e-12: arccos is not differentiable there), when
 /// Σ w_j|q_j|² is zero (all pinned) or when C = 0.
 /// @param p1, p2, p3, p4  positions as in bendingGradients(), m
 /// @param w1, w2, w3, w4  inverse masses, 1/kg
@@ -80,7 +95,8 @@ BendingCorrection projectBendingConstraint(const Vec3& p1, const Vec3& p2, const
 
 /// Exercise 5.3 — the stencil topology: every interior edge of the triangle mesh (an edge shared
 /// by exactly two triangles) gives one stencil (i1, i2 = the edge, i3, i4 = the vertices opposite it
-/// in the two triangles) with the rest angle \f$\varphi_0 = \arccos(d)\f$ of the positions x.
+/// in the two triangles) with the rest angle \f$\varphi_0 = \operatorname{atan2}(\sin\varphi,\ d)\f$ (= arccos d)
+/// of the positions x, computed as in exercise 5.2.
 /// Boundary edges (one triangle) give none. Degenerate rest shape (not valid): φ0 = π.
 /// @param triangles  triangles as particle index triples
 /// @param x          rest positions, 3 x N, m
