@@ -20,15 +20,14 @@ BendingCorrection projectBendingXpbd(const Vec3& p1, const Vec3& p2, const Vec3&
     BendingCorrection r;
     const BendingGradients g = bendingGradients(p1, p2, p3, p4);
     if (!g.valid) return r;
-    const double s2 = 1.0 - g.d * g.d;
-    if (s2 < 1e-12) return r;
+    if (g.sinPhi < 1e-6) return r;  // flat or folded: ∇C = −q_i / sin φ is undefined
     const double sumWq = w1 * g.q1.squaredNorm() + w2 * g.q2.squaredNorm() + w3 * g.q3.squaredNorm() +
                          w4 * g.q4.squaredNorm();
     if (sumWq < 1e-24) return r;
-    const double C = std::acos(g.d) - phi0;
-    const double dl = (-C - alphaTilde * lambda) / (sumWq / s2 + alphaTilde);
+    const double C = std::atan2(g.sinPhi, g.d) - phi0;
+    const double dl = (-C - alphaTilde * lambda) / (sumWq / (g.sinPhi * g.sinPhi) + alphaTilde);
     lambda += dl;
-    const double f = -dl / std::sqrt(s2);  // Δp_i = w_i ∇_i C Δλ with ∇_i C = −q_i/√(1−d²)
+    const double f = -dl / g.sinPhi;  // Δp_i = w_i ∇_i C Δλ with ∇_i C = −q_i / sin φ
     r.dp1 = f * w1 * g.q1;
     r.dp2 = f * w2 * g.q2;
     r.dp3 = f * w3 * g.q3;

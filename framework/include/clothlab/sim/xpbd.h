@@ -24,7 +24,7 @@ namespace clothlab {
 DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
                                        double alphaTilde, double& lambda);
 
-/// One XPBD projection of the bending constraint C = arccos(d) − φ0 (∇_i C = −q_i/√(1−d²)).
+/// One XPBD projection of the bending constraint C = φ − φ0, φ = atan2(sin φ, d) (∇_i C = −q_i / sin φ).
 /// @param p1, p2, p3, p4  positions as in bendingGradients(), m
 /// @param w1, w2, w3, w4  inverse masses, 1/kg
 /// @param phi0            rest angle, rad
