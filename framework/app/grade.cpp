@@ -270,7 +270,7 @@ void writeJunit(const std::string& path, const std::vector<StageResult>& stages)
 int main(int argc, char** argv) {
     CLI::App app{"clothlab-grade — per-stage points from the graded tests"};
     std::vector<std::string> stages, broken;
-    std::string points_dir = "tests", json_out, junit_out, expect, message;
+    std::string points_dir = "tests", json_out, junit_out, expect, message, mistake, why;
     int timeout_s = 60;
     bool quiet = false;
     app.add_option("--stage", stages, "NN=EXECUTABLE, one per stage to grade");
@@ -282,6 +282,8 @@ int main(int argc, char** argv) {
     app.add_option("--expect", expect, "Self-check of the test suite: all-pass, all-fail or some-fail")
         ->check(CLI::IsMember({"all-pass", "all-fail", "some-fail"}));
     app.add_option("--message", message, "With --expect all-fail: every failure must contain this text");
+    app.add_option("--mistake", mistake, "With --expect some-fail: the name of the mistake the stage was built with");
+    app.add_option("--why", why, "With --expect some-fail: what the mistake does wrong (printed with the verdict)");
     app.add_flag("--quiet", quiet, "No per-test failure lines");
     CLI11_PARSE(app, argc, argv);
 
@@ -302,17 +304,24 @@ int main(int argc, char** argv) {
     if (expect.empty()) return 0;
 
     // Self-check mode: say what does not hold and exit non-zero.
-    int bad = 0, failed = 0, total = 0;
+    int bad = 0;
     for (const auto& s : results)
         for (const auto& t : s.tests) {
-            ++total;
-            failed += !t.passed;
             if (expect == "all-pass" && !t.passed) ++bad, std::printf("expected to pass: %s\n", t.name.c_str());
             if (expect == "all-fail" && t.passed) ++bad, std::printf("passes against the stub (a test that cannot fail?): %s\n", t.name.c_str());
             if (expect == "all-fail" && !t.passed && t.message.find(message) == std::string::npos)
                 ++bad, std::printf("fails without \"%s\" (crash or wrong message?): %s\n", message.c_str(), t.name.c_str());
         }
-    if (expect == "some-fail" && failed == 0) ++bad, std::printf("no graded test catches this mistake\n");
+    if (expect == "some-fail") {
+        // A mistake is caught when at least one graded test fails; say which one, and what the mistake is.
+        const std::string what = (mistake.empty() ? "the mistake" : mistake) + (why.empty() ? "" : " — " + why);
+        const TestResult* first = nullptr;
+        for (const auto& s : results)
+            for (const auto& t : s.tests)
+                if (!first && !t.passed) first = &t;
+        if (first) std::printf("caught: %s (by %s)\n", what.c_str(), first->name.c_str());
+        else ++bad, std::printf("NOT caught: %s (no graded test fails)\n", what.c_str());
+    }
     std::printf("self-check (%s): %s\n", expect.c_str(), bad == 0 ? "holds" : "DOES NOT HOLD");
     return bad == 0 ? 0 : 1;
 }

@@ -27,6 +27,15 @@ namespace {
 
 constexpr int W = 160, H = 120;
 
+// Where a test writes its files: CLOTHLAB_TEST_TMP (CTest sets it to a build folder) or else
+// GoogleTest's temp folder, never the current directory (which may be the source tree).
+std::string tmpDir() {
+    const char* t = std::getenv("CLOTHLAB_TEST_TMP");
+    std::string dir = t && *t ? t : ::testing::TempDir();
+    while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
+    return dir;
+}
+
 OffscreenContext& context() {
     static OffscreenContext ctx(W, H);
     return ctx;
@@ -94,7 +103,7 @@ TEST(Render, DeterministicFrame) {
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     const ImageDiff diff = compareImages(a, b, 0);
     EXPECT_TRUE(a.rgba == b.rgba) << "two renders of the same frame differ: " << 100 * diff.bad_fraction << " % of pixels";
-    if (std::getenv("CLOTHLAB_DEBUG_RENDER")) writePng("/tmp/det_a.png", a), writePng("/tmp/det_b.png", b);
+    if (std::getenv("CLOTHLAB_DEBUG_RENDER")) writePng(tmpDir() + "/det_a.png", a), writePng(tmpDir() + "/det_b.png", b);
 }
 
 TEST(Render, ClothWhereTheProjectedClothIsBackgroundElsewhere) {
@@ -157,8 +166,7 @@ TEST(Render, MatchesStoredReference) {
     const ImageDiff diff = compareImages(img, expected, 48);
     const double block = maxBlockDiff(img, expected, 8);
     if (diff.mean > 3.0 || diff.bad_fraction > 0.02 || block > 8.0) {
-        const char* tmp = std::getenv("CLOTHLAB_TEST_TMP");
-        const std::string got = std::string(tmp ? tmp : ".") + "/reference_cloth.got.png";
+        const std::string got = tmpDir() + "/reference_cloth.got.png";
         writePng(got, img);
         ADD_FAILURE() << "render differs from " << ref << ": mean " << diff.mean << "/255, " << 100 * diff.bad_fraction
                       << " % of pixels off by more than 48, largest 8x8 block mean off by " << block
@@ -234,8 +242,7 @@ TEST(Image, PngRoundTrip) {
     Image img;
     img.width = 3, img.height = 2;
     for (int i = 0; i < 24; ++i) img.rgba.push_back(static_cast<unsigned char>(i * 10));
-    const char* tmp = std::getenv("CLOTHLAB_TEST_TMP");
-    const std::string path = std::string(tmp ? tmp : ".") + "/roundtrip.png";
+    const std::string path = tmpDir() + "/roundtrip.png";
     writePng(path, img);
     const Image back = readPng(path);
     EXPECT_TRUE(back.width == 3 && back.height == 2 && back.rgba == img.rgba);
@@ -307,9 +314,8 @@ TEST(App, EveryMethodRunsOrExplainsItself) {
     const int w = 640, h = 400;
     OffscreenImGui gui(w, h);
     ImGuiIO& io = ImGui::GetIO();
-    const char* tmp = std::getenv("CLOTHLAB_TEST_TMP");
     for (const std::string method : {"explicit_euler", "symplectic_euler", "velocity_verlet", "rk4", "implicit_euler", "pbd", "xpbd"}) {
-        const std::string path = std::string(tmp ? tmp : ".") + "/cloth_" + method + ".json";
+        const std::string path = tmpDir() + "/cloth_" + method + ".json";
         std::FILE* f = std::fopen(path.c_str(), "w");
         ASSERT_NE(f, nullptr);
         std::fprintf(f, R"({"model": "cloth", "cloth": {"nx": 8, "ny": 8, "pins": [0, 7]},

@@ -10,7 +10,8 @@ clothlab_mistake(rest_length_ignored FILE hooke.cpp
   FIND "return -k * (length - l0) * (d / length);" REPLACE "return -k * length * (d / length);"
   WHY "a spring of rest length zero")
 clothlab_mistake(no_zero_length_guard FILE hooke.cpp
-  FIND "    if (length < 1e-12) return Vec3::Zero();  // direction undefined\n" REPLACE ""
+  FIND "    if (length < 1e-12) return Vec3::Zero();  // direction undefined\n    return -k * (length - l0)"
+  REPLACE "    return -k * (length - l0)"
   WHY "divides by zero for coincident points")
 clothlab_mistake(damping_absolute_velocity FILE hooke.cpp
   FIND "return -kd * (v1 - v0).dot(dir) * dir;" REPLACE "return -kd * v1.dot(dir) * dir;"
@@ -24,8 +25,8 @@ clothlab_mistake(explicit_uses_new_velocity FILE hooke.cpp
   REPLACE "    v += dt * (f * w.asDiagonal());\n    x += dt * v;"
   WHY "explicit Euler that is really symplectic Euler")
 clothlab_mistake(mass_instead_of_inverse_mass FILE hooke.cpp
-  FIND "    v += dt * (f * w.asDiagonal());             // a_i = w_i F_i"
-  REPLACE "    v += dt * (f * w.asDiagonal().inverse());"
+  FIND "    x += dt * v;                                // old velocity\n    v += dt * (f * w.asDiagonal());             // a_i = w_i F_i"
+  REPLACE "    x += dt * v;\n    v += dt * (f * w.asDiagonal().inverse());"
   WHY "a = F * m instead of F / m (and pinned particles explode)")
 clothlab_mistake(verlet_full_first_kick FILE hooke.cpp
   FIND "    v += 0.5 * dt * (f * w.asDiagonal());       // half kick\n    x += dt * v;                                // drift"

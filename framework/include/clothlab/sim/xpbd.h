@@ -24,13 +24,18 @@ namespace clothlab {
 DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
                                        double alphaTilde, double& lambda);
 
-/// One XPBD projection of the bending constraint C = φ − φ0, φ = atan2(sin φ, d) (∇_i C = −q_i / sin φ).
+/// One XPBD projection of the bending constraint C = φ − φ0, built on exercise 5.2: the PBD
+/// correction with k = 1 is \f$ \Delta\vec p_i^{PBD} = -(C/S)\,w_i\nabla_i C \f$ with
+/// \f$ S = \sum_j w_j|\nabla_j C|^2 = C^2 / \sum_i |\Delta\vec p_i^{PBD}|^2/w_i \f$, so that
+/// \f[ \Delta\lambda = \frac{-C - \tilde\alpha\lambda}{S + \tilde\alpha},\qquad
+///     \Delta\vec p_i = w_i\nabla_i C\,\Delta\lambda = -\frac{S}{C}\,\Delta\lambda\,\Delta\vec p_i^{PBD}. \f]
+/// Where exercise 5.2 gives no correction (degenerate stencil, all pinned, C = 0) this gives none either.
 /// @param p1, p2, p3, p4  positions as in bendingGradients(), m
 /// @param w1, w2, w3, w4  inverse masses, 1/kg
 /// @param phi0            rest angle, rad
 /// @param alphaTilde      α / Δt² (α in 1/(N m)), the compliance of the angle
 /// @param lambda          the constraint's multiplier λ, updated
-/// @return                Δp1..Δp4, m (zero in the degenerate cases of projectBendingConstraint())
+/// @return                Δp1..Δp4, m
 BendingCorrection projectBendingXpbd(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4, double w1,
                                      double w2, double w3, double w4, double phi0, double alphaTilde, double& lambda);
 
