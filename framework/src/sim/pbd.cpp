@@ -6,6 +6,7 @@
 #include "clothlab/core/grid.h"
 #include "clothlab/core/input_error.h"
 #include "clothlab/core/topology.h"
+#include "clothlab/sim/xpbd.h"
 
 namespace clothlab {
 
@@ -143,8 +144,7 @@ double PbdSimulation::rmsBendingError() const {
     if (stencils_.empty()) return 0.0;
     double s = 0.0;
     for (const auto& b : stencils_) {
-        const BendingGradients g = bendingGradients(P_.x.col(b.i1), P_.x.col(b.i2), P_.x.col(b.i3), P_.x.col(b.i4));
-        const double e = (g.valid ? std::atan2(g.sinPhi, g.d) : M_PI) - b.phi0;
+        const double e = bendingAngle(bendingGradients(P_.x.col(b.i1), P_.x.col(b.i2), P_.x.col(b.i3), P_.x.col(b.i4))) - b.phi0;
         s += e * e;
     }
     return std::sqrt(s / static_cast<double>(stencils_.size()));

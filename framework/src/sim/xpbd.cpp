@@ -16,6 +16,11 @@ DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1
     return {w1 * dl * n, -w2 * dl * n};
 }
 
+double bendingAngle(const BendingGradients& g) {
+    if (!g.valid) return M_PI;
+    return std::atan2(g.sinPhi, g.d);
+}
+
 BendingCorrection projectBendingXpbd(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4, double w1,
                                      double w2, double w3, double w4, double phi0, double alphaTilde, double& lambda) {
     // Exercise 5.2 with k = 1 gives the PBD correction Δp_i = −(C/S) w_i ∇_i C, S = Σ_j w_j|∇_j C|².
@@ -27,8 +32,7 @@ BendingCorrection projectBendingXpbd(const Vec3& p1, const Vec3& p2, const Vec3&
     for (const auto& [dp, w] : parts)
         if (w > 0.0) sum += dp->squaredNorm() / w;
     if (!(sum > 0.0)) return {};  // no correction: degenerate stencil, all pinned, or exactly at rest (C = 0)
-    const BendingGradients g = bendingGradients(p1, p2, p3, p4);
-    const double C = std::atan2(g.sinPhi, g.d) - phi0;  // the constraint, C = φ − φ0
+    const double C = bendingAngle(bendingGradients(p1, p2, p3, p4)) - phi0;  // the constraint, C = φ − φ0
     const double S = C * C / sum;
     const double dl = (-C - alphaTilde * lambda) / (S + alphaTilde);
     lambda += dl;

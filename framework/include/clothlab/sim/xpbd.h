@@ -24,6 +24,12 @@ namespace clothlab {
 DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
                                        double alphaTilde, double& lambda);
 
+/// The dihedral angle of a stencil from exercise 5.1's output: \f$ \varphi = \operatorname{atan2}(\sin\varphi, d) \f$
+/// (accurate at every angle, unlike arccos d near flat), π for a degenerate stencil (valid = false).
+/// @param g  d = cos φ and sin φ of the stencil
+/// @return   φ in [0, π], rad
+double bendingAngle(const BendingGradients& g);
+
 /// One XPBD projection of the bending constraint C = φ − φ0, built on exercise 5.2: the PBD
 /// correction with k = 1 is \f$ \Delta\vec p_i^{PBD} = -(C/S)\,w_i\nabla_i C \f$ with
 /// \f$ S = \sum_j w_j|\nabla_j C|^2 = C^2 / \sum_i |\Delta\vec p_i^{PBD}|^2/w_i \f$, so that
