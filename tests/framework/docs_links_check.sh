@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Every file the README and docs/*.md point to exists: markdown links [text](path) and paths in
+# backticks under the repository's top folders (framework/, tests/, scenes/, docs/, exercises/,
+# solutions/, cmake/, benchmarks/, slides/). Placeholders (NN, 0N, *, <...>, {a,b}) are skipped.
+# And the README stays under 12 KB.
+# Usage: docs_links_check.sh SOURCE_DIR   (then proves it fails on a copy with a broken link planted)
+set -u
+root=$1
+
+check() {  # check TREE
+  local tree=$1 bad=0 f dir ref path
+  for f in "$tree/README.md" "$tree"/docs/*.md "$tree"/exercises/*/README.md "$tree/slides/README.md"; do
+    [[ -f $f ]] || continue
+    dir=$(dirname "$f")
+    # markdown links, relative to the file
+    while IFS= read -r ref; do
+      path=${ref%%#*}
+      [[ -z $path || $path == http* || $path == mailto:* ]] && continue
+      [[ -e $dir/$path ]] || { echo "${f#$tree/}: link to a missing file: $ref"; bad=1; }
+    done < <(grep -oE '\]\([^)[:space:]]+\)' "$f" | sed -E 's/^\]\((.*)\)$/\1/')
+    # repository paths in backticks, relative to the tree's root
+    while IFS= read -r ref; do
+      [[ $ref =~ (NN|0N|\*|<|\{|\.\.\.|…|\$) ]] && continue
+      path=${ref%%:*}
+      [[ -e $tree/$path ]] || { echo "${f#$tree/}: names a missing file: $ref"; bad=1; }
+    done < <(grep -oE '`(framework|tests|scenes|docs|exercises|solutions|cmake|benchmarks|slides)/[^` ]+`' "$f" | tr -d '`' | sed -E 's/[),.;]+$//')
+  done
+  return $bad
+}
+
+check "$root" || { echo "FAIL: the docs point to files that do not exist"; exit 1; }
+size=$(wc -c <"$root/README.md")
+((size < 12 * 1024)) || { echo "FAIL: README.md is $size bytes; keep it under 12 KB (one screen per audience, details in docs/)"; exit 1; }
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$tmp/t/docs" && cp "$root/README.md" "$tmp/t/" && cp "$root"/docs/*.md "$tmp/t/docs/"
+echo 'See [the scenes](docs/no_such_file.md) and `framework/src/sim/no_such_file.cpp`.' >> "$tmp/t/README.md"
+out=$(check "$tmp/t")
+grep -q "docs/no_such_file.md" <<<"$out" && grep -q "framework/src/sim/no_such_file.cpp" <<<"$out" \
+  || { echo "FAIL: the check misses a planted broken link"; exit 1; }
+echo "every file the README and docs point to exists (and a planted broken link is caught)"
