@@ -9,7 +9,7 @@ exe=build/bin/clothlab
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 sag() {  # sag of the lowest particle below its rest height y = 1 after 3 s
   "$exe" run scenes/pbd_curtain.json --set cloth.nx=11 --set cloth.ny=11 --set cloth.width=1 --set cloth.height=1 \
-    --set forces.damping=0.05 --steps 300 --quiet --dump "$tmp/d.csv" "$@" >/dev/null
+    --set pbd.damping=0.05 --steps 300 --quiet --dump "$tmp/d.csv" "$@" >/dev/null
   awk -F, 'NR==2{m=$3} NR>1 && $3<m {m=$3} END{printf "%.6f", 1-m}' "$tmp/d.csv"
 }
 xp=(--set solver.method=xpbd --set constraints.distance.compliance=0.01)
