@@ -4,6 +4,15 @@
 #include "clothlab/sim/xpbd.h"
 
 namespace clothlab {
+namespace {
+/// p_{i_m} += Δp_m for the four particles of a stencil.
+void addCorrection(const BendingStencil& s, const BendingCorrection& c, Matrix3X& p) {
+    p.col(s.i1) += c.dp1;
+    p.col(s.i2) += c.dp2;
+    p.col(s.i3) += c.dp3;
+    p.col(s.i4) += c.dp4;
+}
+}  // namespace
 
 void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p) {
     for (const DistanceLink& L : links) {
@@ -15,12 +24,9 @@ void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX&
 
 void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p) {
     for (const BendingStencil& s : stencils) {
-        const BendingCorrection c = projectBendingConstraint(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4),
-                                                             w[s.i1], w[s.i2], w[s.i3], w[s.i4], s.phi0, k);
-        p.col(s.i1) += c.dp1;
-        p.col(s.i2) += c.dp2;
-        p.col(s.i3) += c.dp3;
-        p.col(s.i4) += c.dp4;
+        addCorrection(s, projectBendingConstraint(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1], w[s.i2],
+                                                  w[s.i3], w[s.i4], s.phi0, k),
+                      p);
     }
 }
 
@@ -38,12 +44,9 @@ void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const 
                              std::vector<double>& lambda, Matrix3X& p) {
     for (size_t k = 0; k < stencils.size(); ++k) {
         const BendingStencil& s = stencils[k];
-        const BendingCorrection c = projectBendingXpbd(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1],
-                                                       w[s.i2], w[s.i3], w[s.i4], s.phi0, alphaTilde, lambda[k]);
-        p.col(s.i1) += c.dp1;
-        p.col(s.i2) += c.dp2;
-        p.col(s.i3) += c.dp3;
-        p.col(s.i4) += c.dp4;
+        addCorrection(s, projectBendingXpbd(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1], w[s.i2],
+                                            w[s.i3], w[s.i4], s.phi0, alphaTilde, lambda[k]),
+                      p);
     }
 }
 
