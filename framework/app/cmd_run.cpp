@@ -5,6 +5,7 @@
 #include "clothlab/core/input_error.h"
 #include "clothlab/io/report.h"
 #include "clothlab/io/scene_json.h"
+#include "clothlab/sim/mass_spring.h"
 #include "clothlab/sim/run.h"
 #include "commands.h"
 
@@ -12,7 +13,7 @@ namespace clothlab::cli {
 
 void addRunCommand(CLI::App& app, int& exit_code) {
     struct Options {
-        std::string scene, dump, out;
+        std::string scene, dump, out, state;
         std::vector<std::string> sets;
         long long steps = -1, every = 0;
         double seconds = -1;
@@ -25,7 +26,8 @@ void addRunCommand(CLI::App& app, int& exit_code) {
     auto* steps = cmd->add_option("--steps", opt->steps, "Number of steps (default: solver.steps)")->check(CLI::NonNegativeNumber);
     cmd->add_option("--seconds", opt->seconds, "Simulated time instead of a step count")->check(CLI::NonNegativeNumber)->excludes(steps);
     cmd->add_option("--every", opt->every, "Print a report line every N steps (default: report.every)")->check(CLI::PositiveNumber);
-    cmd->add_option("--dump", opt->dump, "Write the final state as CSV (i,x,y,z,vx,vy,vz)");
+    cmd->add_option("--dump", opt->dump, "Write the final state as CSV (i,x,y,z,vx,vy,vz), 17 significant digits");
+    cmd->add_option("--state", opt->state, "Start from the positions and velocities of a state CSV (from --dump or state.csv); time starts at 0");
     cmd->add_option("--out", opt->out, "Folder for report.csv, summary.json and state.csv");
     cmd->add_flag("--quiet", opt->quiet, "Print only the summary");
     cmd->callback([opt, &exit_code] {
@@ -36,6 +38,12 @@ void addRunCommand(CLI::App& app, int& exit_code) {
         if (every <= 0) every = std::max<long long>(1, steps / 10);
 
         auto sim = makeSimulation(scene);
+        if (!opt->state.empty()) {
+            if (singleSpringAnalytic(scene))  // its report compares with the exact solution from t = 0
+                throw InputError("command line", "--state",
+                                 "the single-spring scene is compared with its analytic solution from t = 0; a restarted state has no matching time");
+            readStateCsv(opt->state, sim->state());
+        }
         std::cout << "scene   " << scene.file << (scene.description.empty() ? "" : "  — " + scene.description) << "\n"
                   << "method  " << methodName(scene.solver.method) << "   dt = " << scene.solver.dt << " s   steps = " << steps
                   << "   particles = " << sim->state().size() << "\n";

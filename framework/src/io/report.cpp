@@ -1,8 +1,12 @@
 #include "clothlab/io/report.h"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <limits>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -13,7 +17,7 @@ namespace {
 std::ofstream openForWriting(const std::string& path) {
     std::ofstream out(path);
     if (!out) throw InputError(path, "(file)", "cannot write the file");
-    out << std::setprecision(12);
+    out << std::setprecision(std::numeric_limits<double>::max_digits10);  // 17: doubles read back bit for bit
     return out;
 }
 std::string label(const Metric& m) { return m.name + " [" + m.unit + "]"; }
@@ -100,6 +104,40 @@ void writeStateCsv(const std::string& path, const State& s) {
     for (int i = 0; i < s.size(); ++i)
         out << i << "," << s.x(0, i) << "," << s.x(1, i) << "," << s.x(2, i) << "," << s.v(0, i) << ","
             << s.v(1, i) << "," << s.v(2, i) << "\n";
+}
+
+void readStateCsv(const std::string& path, State& state) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path, "(file)", "cannot open the file");
+    std::string line;
+    if (!std::getline(in, line) || (line != "i,x,y,z,vx,vy,vz" && line != "i,x,y,z,vx,vy,vz\r"))
+        throw InputError(path, "(header)", "expected the first line \"i,x,y,z,vx,vy,vz\" (a file from --dump or state.csv)");
+    int row = 0;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty()) continue;
+        const std::string where = "row " + std::to_string(row + 2);
+        if (row >= state.size())
+            throw InputError(path, where, "more rows than the scene has particles (" + std::to_string(state.size()) + ")");
+        double v[7];
+        std::istringstream fields(line);
+        std::string field, index;
+        for (int k = 0; k < 7; ++k) {
+            if (!std::getline(fields, field, ',')) throw InputError(path, where, "expected 7 comma-separated numbers");
+            char* end = nullptr;
+            v[k] = std::strtod(field.c_str(), &end);
+            if (end == field.c_str() || *end != '\0') throw InputError(path, where, "\"" + field + "\" is not a number");
+            if (!std::isfinite(v[k])) throw InputError(path, where, "NaN or infinite value");
+            if (k == 0) index = field;
+        }
+        if (std::getline(fields, field, ',')) throw InputError(path, where, "more than 7 values");
+        if (v[0] != row) throw InputError(path, where, "particle index " + index + " out of order (want " + std::to_string(row) + ")");
+        state.x.col(row) = Vec3(v[1], v[2], v[3]);
+        state.v.col(row) = Vec3(v[4], v[5], v[6]);
+        ++row;
+    }
+    if (row != state.size())
+        throw InputError(path, "(rows)", std::to_string(row) + " particles, the scene has " + std::to_string(state.size()));
 }
 
 }  // namespace clothlab

@@ -26,8 +26,16 @@ void writeReportCsv(const std::string& path, const RunResult& result);
 /// @throws InputError if the file cannot be written
 void writeSummaryJson(const std::string& path, const Simulation& sim, const RunResult& result);
 
-/// Writes the state as CSV with the header `i,x,y,z,vx,vy,vz`, one row per particle.
+/// Writes the state as CSV with the header `i,x,y,z,vx,vy,vz`, one row per particle. Every file
+/// the report writes prints doubles with 17 significant digits, so that they read back bit for bit.
 /// @throws InputError if the file cannot be written
 void writeStateCsv(const std::string& path, const State& state);
+
+/// Reads positions x (m) and velocities v (m/s) from a state CSV written by writeStateCsv() into
+/// `state`, which must have as many particles as the file has rows; inverse masses and time stay.
+/// Row k must be particle k. A state written and read back is bit-identical.
+/// @throws InputError naming the file and the row or field for a missing or wrong header, a row
+///         that is not 7 numbers, an index out of order, a NaN or infinite value, or a wrong row count
+void readStateCsv(const std::string& path, State& state);
 
 }  // namespace clothlab
