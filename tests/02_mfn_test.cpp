@@ -14,6 +14,7 @@
 #include "clothlab/core/grid.h"
 #include "clothlab/exercise/01_hooke.h"
 #include "clothlab/exercise/02_mfn.h"
+#include "clothlab/sim/energy.h"  // springEnergy(): the framework's, not your code
 #include "test_util.h"
 
 using namespace clothlab;
@@ -74,16 +75,6 @@ struct MovingCloth {
             }
     }
 };
-
-// Spring energy Σ ½ k (|x_j − x_i| − l0)², computed here (not with your code).
-double springEnergy(const std::vector<Spring>& springs, const Matrix3X& x) {
-    double e = 0.0;
-    for (const Spring& s : springs) {
-        const double d = (x.col(s.j) - x.col(s.i)).norm() - s.l0;
-        e += 0.5 * s.k * d * d;
-    }
-    return e;
-}
 
 }  // namespace
 

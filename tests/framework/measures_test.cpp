@@ -28,7 +28,7 @@ const Metric* find(const std::vector<Metric>& ms, const std::string& name) {
 // shape: every stretch measure must agree, as a fraction with unit "1". A uniform stretch by
 // 10 % in both directions stretches every edge by exactly 0.1 (an independent expectation).
 TEST(Measures, StrainIsTheSameFractionForEveryMethod) {
-    for (const std::string& m : {"symplectic_euler", "implicit_euler", "pbd", "xpbd"}) {
+    for (const std::string m : {"symplectic_euler", "implicit_euler", "pbd", "xpbd"}) {
         auto sim = makeSimulation(sceneFile("mfn_hanging", {"solver.method=" + m, "constraints.distance.stiffness=1"}));
         State& s = sim->state();
         const Vec3 anchor = s.x.col(0);
@@ -46,7 +46,7 @@ TEST(Measures, StrainIsTheSameFractionForEveryMethod) {
 
 // Report units: every metric of every shipped kind of scene has a unit, strain is never in percent.
 TEST(Measures, EveryMetricHasAUnitAndNoneIsPercent) {
-    for (const std::string& name : {"spring", "chain", "mfn_hanging", "pbd_sphere"}) {
+    for (const std::string name : {"spring", "chain", "mfn_hanging", "pbd_sphere"}) {
         auto sim = makeSimulation(sceneFile(name));
         sim->step();
         for (const Metric& m : sim->metrics()) {
@@ -58,7 +58,7 @@ TEST(Measures, EveryMetricHasAUnitAndNoneIsPercent) {
 
 // The energy is defined once: kinetic + gravity (+ springs), and PBD reports it with its drift too.
 TEST(Measures, EnergyAndDriftForEveryMethod) {
-    for (const std::string& m : {"symplectic_euler", "pbd"}) {
+    for (const std::string m : {"symplectic_euler", "pbd"}) {
         auto sim = makeSimulation(sceneFile("mfn_hanging", {"solver.method=" + m}));
         const std::vector<Metric> ms = sim->metrics();
         ASSERT_TRUE(find(ms, "energy") && find(ms, "energy_drift")) << m;
@@ -103,7 +103,7 @@ TEST(Measures, OldDampingFieldIsAClearError) {
 // Air damping is a force, -c v, with the same meaning for PBD as for the force-based methods: a
 // free particle cloud with no gravity loses momentum at the rate c/m (dv/dt = -c v / m).
 TEST(Measures, AirDampingMeansTheSameForceForEveryMethod) {
-    for (const std::string& m : {"symplectic_euler", "pbd"}) {
+    for (const std::string m : {"symplectic_euler", "pbd"}) {
         auto sim = makeSimulation(sceneFile("mfn_hanging", {"solver.method=" + m, "forces.gravity=[0,0,0]", "forces.air_damping=0.01",
                                                            "cloth.pins=[]", "springs.structural.kd=0", "springs.shear.kd=0"}));
         State& s = sim->state();

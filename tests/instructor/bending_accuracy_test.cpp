@@ -32,34 +32,12 @@ struct Sample {
     double theta;  // π − φ of the construction, rad
 };
 
-// The header's formulas in long double, with sin φ = |n1 × n2| and φ = atan2(sin φ, d): the truth.
-// Returns false where the header gives no correction (zero area, sin φ < 1e-6, all pinned).
-bool truthLongDouble(const Sample& s, double k, std::array<VL, 4>& dp) {
-    const VL p2 = s.p[1].cast<LD>() - s.p[0].cast<LD>(), p3 = s.p[2].cast<LD>() - s.p[0].cast<LD>(),
-             p4 = s.p[3].cast<LD>() - s.p[0].cast<LD>();
-    const LD A1 = p2.cross(p3).norm(), A2 = p2.cross(p4).norm();
-    if (A1 < 1e-12L || A2 < 1e-12L) return false;
-    const VL n1 = p2.cross(p3) / A1, n2 = p2.cross(p4) / A2;
-    const LD d = std::clamp(n1.dot(n2), -1.0L, 1.0L);
-    const LD sinPhi = n1.cross(n2).norm();
-    if (sinPhi < 1e-6L) return false;
-    VL q[4];
-    q[2] = (n2.cross(p2) + p2.cross(n1) * d) / A1;
-    q[3] = (n1.cross(p2) + p2.cross(n2) * d) / A2;
-    q[1] = (p3.cross(n2) + n1.cross(p3) * d) / A1 + (p4.cross(n1) + n2.cross(p4) * d) / A2;
-    q[0] = -q[1] - q[2] - q[3];
-    LD sum = 0;
-    for (int i = 0; i < 4; ++i) sum += s.w[i] * q[i].squaredNorm();
-    if (sum < 1e-24L) return false;
-    const LD scale = k * sinPhi * (std::atan2(sinPhi, d) - s.phi0) / sum;
-    for (int i = 0; i < 4; ++i) dp[i] = scale * s.w[i] * q[i];
-    return true;
-}
-
-// The textbook form of Müller et al. 2007 (and of this course's first header): φ = arccos d and
-// sin φ = sqrt(1 − d²), in any floating-point type T. Returns false where it gives no correction.
+// Exercise 5.2's formulas in any floating-point type T, in one of two forms. The header's (sound)
+// form: sin φ = |n1 × n2|, φ = atan2(sin φ, d), no correction for sin φ < 1e-6. The textbook form of
+// Müller et al. 2007 (and of this course's first header): sin φ = sqrt(1 − d²), φ = arccos d, no
+// correction for 1 − d² < 1e-12. Returns false where the form gives no correction.
 template <typename T>
-bool textbook(const Sample& s, double k, std::array<Eigen::Matrix<T, 3, 1>, 4>& dp) {
+bool projection(const Sample& s, double k, bool textbookForm, std::array<Eigen::Matrix<T, 3, 1>, 4>& dp) {
     using V = Eigen::Matrix<T, 3, 1>;
     const V p2 = s.p[1].cast<T>() - s.p[0].cast<T>(), p3 = s.p[2].cast<T>() - s.p[0].cast<T>(),
             p4 = s.p[3].cast<T>() - s.p[0].cast<T>();
@@ -67,7 +45,9 @@ bool textbook(const Sample& s, double k, std::array<Eigen::Matrix<T, 3, 1>, 4>& 
     if (A1 < T(1e-12) || A2 < T(1e-12)) return false;
     const V n1 = p2.cross(p3) / A1, n2 = p2.cross(p4) / A2;
     const T d = std::clamp(n1.dot(n2), T(-1), T(1));
-    if (1 - d * d < T(1e-12)) return false;
+    if (textbookForm ? 1 - d * d < T(1e-12) : n1.cross(n2).norm() < T(1e-6)) return false;
+    const T sinPhi = textbookForm ? std::sqrt(1 - d * d) : n1.cross(n2).norm();
+    const T phi = textbookForm ? std::acos(d) : std::atan2(sinPhi, d);
     V q[4];
     q[2] = (n2.cross(p2) + p2.cross(n1) * d) / A1;
     q[3] = (n1.cross(p2) + p2.cross(n2) * d) / A2;
@@ -76,10 +56,15 @@ bool textbook(const Sample& s, double k, std::array<Eigen::Matrix<T, 3, 1>, 4>& 
     T sum = 0;
     for (int i = 0; i < 4; ++i) sum += T(s.w[i]) * q[i].squaredNorm();
     if (sum < T(1e-24)) return false;
-    const T scale = T(k) * std::sqrt(1 - d * d) * (std::acos(d) - T(s.phi0)) / sum;
+    const T scale = T(k) * sinPhi * (phi - T(s.phi0)) / sum;
     for (int i = 0; i < 4; ++i) dp[i] = scale * T(s.w[i]) * q[i];
     return true;
 }
+// The header's form in long double: the truth.
+bool truthLongDouble(const Sample& s, double k, std::array<VL, 4>& dp) { return projection<LD>(s, k, false, dp); }
+// The textbook form.
+template <typename T>
+bool textbook(const Sample& s, double k, std::array<Eigen::Matrix<T, 3, 1>, 4>& dp) { return projection<T>(s, k, true, dp); }
 
 // A random stencil of about 1 m, rotated arbitrarily, bent by θ from flat (φ = π − θ).
 // far: rest angle π − 0.5 (a crease pressed flat); else a rest angle near φ (|C| ≈ θ/2 or less).

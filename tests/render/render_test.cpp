@@ -314,7 +314,8 @@ TEST(App, EveryMethodRunsOrExplainsItself) {
     const int w = 640, h = 400;
     OffscreenImGui gui(w, h);
     ImGuiIO& io = ImGui::GetIO();
-    for (const std::string method : {"explicit_euler", "symplectic_euler", "velocity_verlet", "rk4", "implicit_euler", "pbd", "xpbd"}) {
+    for (Method m : allMethods()) {
+        const std::string method = methodName(m);
         const std::string path = tmpDir() + "/cloth_" + method + ".json";
         std::FILE* f = std::fopen(path.c_str(), "w");
         ASSERT_NE(f, nullptr);

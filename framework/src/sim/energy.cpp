@@ -4,14 +4,14 @@ namespace clothlab {
 
 double kineticEnergy(const VectorX& w, const Matrix3X& v) {
     double e = 0.0;
-    for (int i = 0; i < static_cast<int>(w.size()); ++i)
+    for (int i = 0; i < w.size(); ++i)
         if (w[i] > 0.0) e += 0.5 * v.col(i).squaredNorm() / w[i];
     return e;
 }
 
 double gravityEnergy(const VectorX& w, const Matrix3X& x, const Vec3& g) {
     double e = 0.0;
-    for (int i = 0; i < static_cast<int>(w.size()); ++i)
+    for (int i = 0; i < w.size(); ++i)
         if (w[i] > 0.0) e -= g.dot(x.col(i)) / w[i];
     return e;
 }

@@ -16,11 +16,11 @@ std::string instabilityReason(const State& s, double bound) {
     return "";
 }
 
-std::string stepAndCheck(Simulation& sim, long long step) {
+std::string stepAndCheck(Simulation& sim, long long step, double bound) {
     std::string why;
     try {
         sim.step();
-        why = instabilityReason(sim.state(), sim.scene().report.blowup);
+        why = instabilityReason(sim.state(), bound);
     } catch (const SolverFailure& e) {
         why = e.what();
     }

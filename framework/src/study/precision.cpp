@@ -43,6 +43,13 @@ std::vector<std::string> methodsOf(const PrecisionResult& r) {
     return m;
 }
 
+/// True when the runs of `series` are position-based (budget sweeps, not Δt sweeps).
+bool positionBasedSeries(const PrecisionResult& r, const std::string& series) {
+    for (const auto& run : r.runs)
+        if (run.series == series) return isPositionBased(run.method);
+    return false;
+}
+
 /// Number of constraints a position-based simulation projects per iteration (distance + bending).
 double constraintCount(const Simulation& sim) {
     const auto* pbd = dynamic_cast<const PbdSimulation*>(&sim);
@@ -163,7 +170,7 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
                 const std::string series = method + " " + sweep;
                 for (int b : o.budgets) {
                     PrecisionRun run;
-                    run.method = method;
+                    run.method = m;
                     run.series = series;
                     run.iterations = sweep == "iterations" ? b : 1;
                     run.substeps = sweep == "substeps" ? b : 1;
@@ -181,7 +188,7 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
         }
         for (auto it = dts.rbegin(); it != dts.rend(); ++it) {  // largest dt first: quick runs first
             PrecisionRun run;
-            run.method = method;
+            run.method = m;
             run.series = method;
             run.steps = stepsFor(o.end_time, *it);
             run.dt = o.end_time / static_cast<double>(run.steps);
@@ -223,7 +230,7 @@ void writePrecisionCsv(const std::string& path, const PrecisionResult& r) {
     if (!out) throw InputError(path, "(file)", "cannot write the file");
     out << std::setprecision(10) << "method,dt [s],steps,error [m],wall [s],unstable,series,iterations,substeps,projections_per_s [1/s],rms_strain [1]\n";
     for (const PrecisionRun& p : r.runs)
-        out << p.method << "," << p.dt << "," << p.steps << "," << p.error << "," << p.wall << "," << (p.unstable ? 1 : 0) << ","
+        out << methodName(p.method) << "," << p.dt << "," << p.steps << "," << p.error << "," << p.wall << "," << (p.unstable ? 1 : 0) << ","
             << p.series << "," << p.iterations << "," << p.substeps << "," << p.projections << "," << p.strain << "\n";
 }
 
@@ -251,7 +258,7 @@ void printPositionBasedTable(std::ostream& out, const PrecisionResult& r) {
     }
     out << "work-precision slope (log error over log projections; -1: ten times the cost, ten times less error; 0: no gain):\n";
     for (const std::string& m : methodsOf(r)) {
-        if (!r.slopes.count(m) || m.find(' ') == std::string::npos) continue;
+        if (!r.slopes.count(m) || !positionBasedSeries(r, m)) continue;
         std::snprintf(buf, sizeof buf, "  %-18s %6.2f\n", m.c_str(), r.slopes.at(m));
         out << buf;
     }
@@ -294,16 +301,16 @@ void printPrecisionTable(std::ostream& out, const PrecisionResult& r) {
     for (const PrecisionRun& p : r.runs) {
         if (p.projections > 0.0) continue;
         if (p.unstable)
-            std::snprintf(buf, sizeof buf, "%-18s %12.4g %10lld %14s %12.4g %14.3g\n", p.method.c_str(), p.dt, p.steps, "unstable", p.wall,
+            std::snprintf(buf, sizeof buf, "%-18s %12.4g %10lld %14s %12.4g %14.3g\n", methodName(p.method), p.dt, p.steps, "unstable", p.wall,
                           1e6 * p.wall / static_cast<double>(p.steps));
         else
-            std::snprintf(buf, sizeof buf, "%-18s %12.4g %10lld %14.4e %12.4g %14.3g\n", p.method.c_str(), p.dt, p.steps, p.error, p.wall,
+            std::snprintf(buf, sizeof buf, "%-18s %12.4g %10lld %14.4e %12.4g %14.3g\n", methodName(p.method), p.dt, p.steps, p.error, p.wall,
                           1e6 * p.wall / static_cast<double>(p.steps));
         out << buf;
     }
     out << "measured order (slope of log error over log dt; theory: explicit/symplectic/implicit Euler 1, Verlet 2, RK4 4):\n";
     for (const std::string& m : methodsOf(r)) {
-        if (isPositionBased(*parseMethod(m.substr(0, m.find(' '))))) continue;  // a series "<method> <sweep>"
+        if (positionBasedSeries(r, m)) continue;
         std::snprintf(buf, sizeof buf, "  %-18s %6.2f\n", m.c_str(), r.slopes.count(m) ? r.slopes.at(m) : NAN);
         out << buf;
     }

@@ -35,14 +35,13 @@ std::string fmt(double x, int precision = 3) {
 
 StabilityVerdict classifyStability(const Scene& scene, const StabilityCriteria& criteria) {
     StabilityVerdict v;
+    auto sim = makeSimulation(scene);
     // Scales: extent L of the initial positions, total free mass, initial energy.
-    const State s0 = makeSimulation(scene)->state();
+    const State& s0 = sim->state();
     const double extent = s0.size() > 0 ? (s0.x.rowwise().maxCoeff() - s0.x.rowwise().minCoeff()).norm() : 0.0;
     double mass = 0.0;
     for (int i = 0; i < s0.size(); ++i) mass += s0.w[i] > 0.0 ? 1.0 / s0.w[i] : 0.0;
-    Scene bounded = scene;
-    bounded.report.blowup = 1e3 * (extent + 1.0);  // a blow-up long before the numbers overflow
-    auto sim = makeSimulation(bounded);
+    const double bound = 1e3 * (extent + 1.0);  // a blow-up long before the numbers overflow
     const double e0 = sim->energy();
     const double e_scale = std::max({std::abs(e0), mass * scene.forces.gravity.norm() * extent, 1e-12});
     const long long check_every = std::max<long long>(1, criteria.steps / 100);
@@ -52,7 +51,7 @@ StabilityVerdict classifyStability(const Scene& scene, const StabilityCriteria& 
         return v;
     };
     for (v.steps = 1; v.steps <= criteria.steps; ++v.steps) {
-        if (const std::string why = stepAndCheck(*sim, v.steps); !why.empty()) return unstable(why);
+        if (const std::string why = stepAndCheck(*sim, v.steps, bound); !why.empty()) return unstable(why);
         if (v.steps % check_every == 0 || v.steps == criteria.steps) {
             const double growth = (sim->energy() - e0) / e_scale;
             v.energy_growth = std::max(v.energy_growth, growth);
@@ -111,6 +110,16 @@ double measureCriticalDt(const Scene& scene, Method method, double dt_lo, double
     return std::sqrt(dt_lo * dt_hi);
 }
 
+namespace {
+/// The methods of a sweep, in the order they were run.
+std::vector<Method> methodsOf(const StabilityResult& r) {
+    std::vector<Method> methods;
+    for (const auto& p : r.points)
+        if (methods.empty() || methods.back() != p.method) methods.push_back(p.method);
+    return methods;
+}
+}  // namespace
+
 void writeStabilityCsv(const std::string& path, const StabilityResult& r) {
     std::ofstream out(path);
     if (!out) throw InputError(path, "(file)", "cannot write the file");
@@ -125,24 +134,21 @@ void printStabilityTable(std::ostream& out, const StabilityResult& r) {
         << "'+'/'x' where theory disagrees (stable/unstable measured)\n"
         << "omega_max = " << fmt(r.omega_ref, 4) << " rad/s at k = " << fmt(r.k_ref, 4)
         << " N/m (largest eigenvalue of M^-1 K; scales with sqrt(k))\n";
-    std::vector<std::string> methods;
-    for (const auto& p : r.points)
-        if (methods.empty() || methods.back() != methodName(p.method)) methods.push_back(methodName(p.method));
-    for (const std::string& m : methods) {
+    for (Method m : methodsOf(r)) {
         std::vector<double> ks, dts;
         for (const auto& p : r.points)
-            if (methodName(p.method) == m) {
+            if (p.method == m) {
                 if (std::find(ks.begin(), ks.end(), p.k) == ks.end()) ks.push_back(p.k);
                 if (std::find(dts.begin(), dts.end(), p.dt) == dts.end()) dts.push_back(p.dt);
             }
         int agree = 0, cells = 0;
-        out << "\n" << m << "  (rows: dt [s], columns: k [N/m] from " << fmt(ks.front()) << " to " << fmt(ks.back()) << ")\n";
+        out << "\n" << methodName(m) << "  (rows: dt [s], columns: k [N/m] from " << fmt(ks.front()) << " to " << fmt(ks.back()) << ")\n";
         for (auto dt = dts.rbegin(); dt != dts.rend(); ++dt) {
             char buf[32];
             std::snprintf(buf, sizeof buf, "%10.3g  ", *dt);
             out << buf;
             for (const auto& p : r.points) {
-                if (methodName(p.method) != m || p.dt != *dt) continue;
+                if (p.method != m || p.dt != *dt) continue;
                 const double limit = theoreticalCriticalDt(p.method, p.omega_max);
                 const bool known = limit >= 0.0 && p.omega_max > 0.0;
                 const bool theory_stable = p.dt < limit;
@@ -156,7 +162,7 @@ void printStabilityTable(std::ostream& out, const StabilityResult& r) {
             }
             out << "\n";
         }
-        switch (*parseMethod(m)) {
+        switch (m) {
             case Method::ExplicitEuler:
                 out << "theory: undamped explicit Euler grows by sqrt(1 + omega^2 dt^2) per step - unstable for every dt; "
                        "the map shows where it grew beyond the energy factor within the run\n";
@@ -181,15 +187,14 @@ void printStabilityTable(std::ostream& out, const StabilityResult& r) {
 }
 
 std::vector<std::string> plotStability(const std::string& dir, const StabilityResult& r) {
-    std::vector<std::string> methods;
-    for (const auto& p : r.points)
-        if (methods.empty() || methods.back() != methodName(p.method)) methods.push_back(methodName(p.method));
+    std::vector<std::string> methods;  // names: they name the files and panels
     // One data file per method: k dt stable
-    for (const std::string& m : methods) {
-        std::ofstream d(dir + "/stability_" + m + ".dat");
+    for (Method m : methodsOf(r)) {
+        methods.push_back(methodName(m));
+        std::ofstream d(dir + "/stability_" + methods.back() + ".dat");
         d << std::setprecision(10) << "# k dt stable\n";
         for (const auto& p : r.points)
-            if (methodName(p.method) == m) d << p.k << " " << p.dt << " " << (p.verdict.stable ? 1 : 0) << "\n";
+            if (p.method == m) d << p.k << " " << p.dt << " " << (p.verdict.stable ? 1 : 0) << "\n";
     }
     const std::string w = fmt(r.omega_ref, 10), kr = fmt(r.k_ref, 10);
     double k_lo = INFINITY, k_hi = 0, dt_lo = INFINITY, dt_hi = 0;

@@ -60,8 +60,6 @@ public:
     const std::vector<Spring>& springs() const { return springs_; }
     /// Distance between the hanging particle and the analytic solution, m (0 without one).
     double analyticError() const;
-    /// Largest analyticError() after any step so far, m.
-    double maxAnalyticError() const { return max_error_; }
 
 protected:
     double elasticEnergy() const override;

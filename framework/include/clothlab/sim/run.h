@@ -36,9 +36,17 @@ std::string instabilityReason(const State& s, double bound);
 /// Takes one step and checks it: "" when the step went well, else the one message every program
 /// prints, "unstable at step N (t = T s): <reason>", for a blow-up (instabilityReason()) or a step
 /// the method could not take (SolverFailure).
+/// @param sim    the simulation
+/// @param step   the number of this step (1 for the first), for the message
+/// @param bound  radius of the region the particles must stay in, m
+std::string stepAndCheck(Simulation& sim, long long step, double bound);
+
+/// stepAndCheck() with the scene's own bound, report.blowup.
 /// @param sim   the simulation
 /// @param step  the number of this step (1 for the first), for the message
-std::string stepAndCheck(Simulation& sim, long long step);
+inline std::string stepAndCheck(Simulation& sim, long long step) {
+    return stepAndCheck(sim, step, sim.scene().report.blowup);
+}
 
 /// Steps `steps` times (or until the state turns NaN/Inf or leaves the ball of radius
 /// scene.report.blowup), recording a report row every `every` steps.

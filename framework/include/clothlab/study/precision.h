@@ -44,7 +44,7 @@ struct PrecisionOptions {
 
 /// One run of the study.
 struct PrecisionRun {
-    std::string method;     ///< solver.method
+    Method method = Method::SymplecticEuler;  ///< solver.method
     double dt = 0.0;        ///< time step, s
     long long steps = 0;    ///< steps to reach end_time
     double error = 0.0;     ///< RMS over particles of |x_i(T) − x_i^ref(T)|, m (NaN if unstable)
