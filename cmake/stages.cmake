@@ -3,7 +3,6 @@
 # OBJECT libraries, one per source of code:
 #   stage_NN_exercises   the student stubs (exercises/NN_name)
 #   stage_NN_solutions   the reference (solutions/NN_name), when present
-#   stage_NN_submission  a submission to grade (CLOTHLAB_SUBMISSION/NN_name), when set
 # and CLOTHLAB_IMPL_NN names the one the apps and the other stages' tests link.
 
 file(GLOB _stage_dirs RELATIVE "${PROJECT_SOURCE_DIR}/exercises" "${PROJECT_SOURCE_DIR}/exercises/[0-9][0-9]_*")
@@ -24,13 +23,6 @@ function(clothlab_stage_library target dir)
   target_link_libraries(${target} PUBLIC clothlab_headers)
 endfunction()
 
-if(CLOTHLAB_SUBMISSION)
-  get_filename_component(CLOTHLAB_SUBMISSION "${CLOTHLAB_SUBMISSION}" ABSOLUTE)
-  if(NOT IS_DIRECTORY "${CLOTHLAB_SUBMISSION}")
-    message(FATAL_ERROR "error: ${CLOTHLAB_SUBMISSION}: (folder): the submission folder does not exist")
-  endif()
-endif()
-
 foreach(_dir IN LISTS _stage_dirs)
   string(SUBSTRING "${_dir}" 0 2 NN)
   list(APPEND CLOTHLAB_STAGES ${NN})
@@ -50,15 +42,7 @@ foreach(_dir IN LISTS _stage_dirs)
   if(_has_solution AND ("all" IN_LIST CLOTHLAB_REFERENCE_STAGES OR NN IN_LIST CLOTHLAB_REFERENCE_STAGES))
     set(_reference ON)
   endif()
-  if(CLOTHLAB_SUBMISSION)
-    if(IS_DIRECTORY "${CLOTHLAB_SUBMISSION}/${_dir}")
-      clothlab_stage_library(stage_${NN}_submission "${CLOTHLAB_SUBMISSION}/${_dir}")
-    else()
-      message(STATUS "clothlab: ${CLOTHLAB_SUBMISSION} has no ${_dir}/: stage ${NN} graded as the untouched stub")
-      add_library(stage_${NN}_submission ALIAS stage_${NN}_exercises)
-    endif()
-    set(_impl stage_${NN}_submission)
-  elseif(_has_solution AND CLOTHLAB_CODE STREQUAL "solutions")
+  if(_has_solution AND CLOTHLAB_CODE STREQUAL "solutions")
     set(_impl stage_${NN}_solutions)
   else()
     set(_impl stage_${NN}_exercises)

@@ -24,25 +24,28 @@ export CLOTHLAB_BUILD="$tmp/build"
 # Only stubs run here (they throw at once), so an unoptimised build is enough and compiles faster.
 export CLOTHLAB_BUILD_TYPE=Debug
 ./lab grade --json "$tmp/grade.json" >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the copy"; }
+grep -q '"max_points": [1-9]' "$tmp/grade.json" || fail "grade.json has no points"
+grep -q '"passed": true' "$tmp/grade.json" && fail "the untouched copy passes a graded test: $(grep -B3 '"passed": true' "$tmp/grade.json" | head -4)"
+# The copy's own graded binaries (its stubs): every test fails with "not implemented", through the grader.
+targets=(clothlab)
+for d in exercises/[0-9][0-9]_*/; do nn=$(basename "$d"); targets+=("grade_${nn:0:2}_exercises"); done
+cmake --build "$CLOTHLAB_BUILD" -j "$(nproc)" --target "${targets[@]}" >"$tmp/build.log" 2>&1 || { tail "$tmp/build.log"; fail "build the copy's CLI and graded binaries"; }
 specs=()
-for exe in "$CLOTHLAB_BUILD"/grade/bin/grade_*_submission; do
+for exe in "$CLOTHLAB_BUILD"/bin/grade_*_exercises; do
   nn=$(basename "$exe"); nn=${nn#grade_}; nn=${nn%%_*}
   specs+=(--stage "$nn=$exe")
 done
 ((${#specs[@]})) || fail "no graded test binaries in the copy"
-"$CLOTHLAB_BUILD/grade/bin/clothlab-grade" --points-dir tests --quiet --expect all-fail --message "not implemented: exercise" "${specs[@]}" \
+"$CLOTHLAB_BUILD/bin/clothlab-grade" --points-dir tests --quiet --expect all-fail --message "not implemented: exercise" "${specs[@]}" \
   || fail "the untouched copy must fail every graded test with 'not implemented'"
-grep -q '"max_points": [1-9]' "$tmp/grade.json" || fail "grade.json has no points"
-# The CLI of the same (grading) build: the copy's own stubs.
-cmake --build "$CLOTHLAB_BUILD/grade" -j "$(nproc)" --target clothlab >"$tmp/build.log" 2>&1 || { tail "$tmp/build.log"; fail "build the copy's CLI"; }
 for s in scenes/*.json; do
-  "$CLOTHLAB_BUILD/grade/bin/clothlab" run "$s" --steps 5 >"$tmp/run.log" 2>&1
+  "$CLOTHLAB_BUILD/bin/clothlab" run "$s" --steps 5 >"$tmp/run.log" 2>&1
   code=$?
   [[ $code -eq 2 ]] && grep -q "not implemented: exercise" "$tmp/run.log" || fail "$s in the copy: exit $code, $(tail -2 "$tmp/run.log")"
 done
 # The instructors' batched bending kernel is not in the copy (nothing registers it at the solver's
 # extension point): asking for it is one clear input error that lists what there is.
-"$CLOTHLAB_BUILD/grade/bin/clothlab" run scenes/pbd_hanging.json --set solver.bending_kernel=batched --steps 5 >"$tmp/run.log" 2>&1
+"$CLOTHLAB_BUILD/bin/clothlab" run scenes/pbd_hanging.json --set solver.bending_kernel=batched --steps 5 >"$tmp/run.log" 2>&1
 code=$?
 [[ $code -eq 1 && $(grep -c '^error: scenes/pbd_hanging.json: solver.bending_kernel: unknown value "batched" (allowed: exercise)$' "$tmp/run.log") -eq 1 ]] \
   || fail "bending_kernel batched in the copy: exit $code, $(tail -2 "$tmp/run.log")"

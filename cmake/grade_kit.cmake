@@ -1,0 +1,57 @@
+# The grading kit: everything grading a submission needs from this build, listed in
+# build/grade-kit/kit.json for clothlab-grade (framework/app/grade/submission.h):
+#   - a copy of the public headers only (clothlab/core, clothlab/exercise): a submission is
+#     compiled in a sandbox that sees these and its own files, nothing else of the tree;
+#   - the compiler and the flags this build compiles with (same ABI, same numerics);
+#   - per stage the object files of its graded tests, its reference (solutions/, when present)
+#     and its stub; the graded main(), the framework library and GoogleTest to link with.
+set(_kit "${CMAKE_BINARY_DIR}/grade-kit")
+file(GLOB _public CONFIGURE_DEPENDS
+  "${PROJECT_SOURCE_DIR}/framework/include/clothlab/core/*.h"
+  "${PROJECT_SOURCE_DIR}/framework/include/clothlab/exercise/*.h")
+foreach(_h IN LISTS _public)
+  file(RELATIVE_PATH _rel "${PROJECT_SOURCE_DIR}/framework/include" "${_h}")
+  configure_file("${_h}" "${_kit}/include/${_rel}" COPYONLY)
+endforeach()
+
+string(TOUPPER "${CMAKE_BUILD_TYPE}" _config)
+separate_arguments(_flags UNIX_COMMAND "-std=c++${CMAKE_CXX_STANDARD} ${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_config}}")
+list(JOIN _flags "\", \"" _flags_json)
+
+set(_stages_json "")
+set(_kit_deps clothlab-grade clothlab_graded_main clothlab_framework)
+foreach(NN IN LISTS CLOTHLAB_STAGES)
+  if(NOT TARGET gradedtests_${NN})
+    continue()
+  endif()
+  set(_ref "[]")
+  if(CLOTHLAB_HAS_SOLUTION_${NN})
+    set(_ref "[\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_solutions>,\", \">\"]")
+    list(APPEND _kit_deps stage_${NN}_solutions)
+  endif()
+  if(_stages_json)
+    string(APPEND _stages_json ",\n")
+  endif()
+  string(APPEND _stages_json "    {\"stage\": \"${NN}\", \"dir\": \"${CLOTHLAB_STAGE_DIR_${NN}}\",
+     \"tests\": [\"$<JOIN:$<TARGET_OBJECTS:gradedtests_${NN}>,\", \">\"],
+     \"reference\": ${_ref},
+     \"stub\": [\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_exercises>,\", \">\"]}")
+  list(APPEND _kit_deps gradedtests_${NN} stage_${NN}_exercises)
+endforeach()
+
+file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
+  \"compiler\": \"${CMAKE_CXX_COMPILER}\",
+  \"compile_flags\": [\"${_flags_json}\"],
+  \"include_dir\": \"${_kit}/include\",
+  \"system_includes\": [\"$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,\", \">\"],
+  \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_graded_main>,\", \">\"],
+  \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:GTest::gtest>\"],
+  \"link_flags\": [\"-pthread\"],
+  \"points_dir\": \"${PROJECT_SOURCE_DIR}/tests\",
+  \"stages\": [
+${_stages_json}
+  ]
+}
+")
+add_custom_target(clothlab-grade-kit ALL COMMENT "the grading kit: ${_kit}/kit.json")
+add_dependencies(clothlab-grade-kit ${_kit_deps})

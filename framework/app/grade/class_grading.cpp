@@ -1,0 +1,213 @@
+#include "class_grading.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <regex>
+#include <stdexcept>
+
+#include "report.h"
+#include "sandbox.h"
+
+namespace grade {
+
+namespace {
+
+struct Entry {
+    std::string name;  ///< the student (folder or archive name without extension)
+    fs::path path;
+    std::string archive;  ///< "", "zip" or "tar"
+};
+
+std::string safeName(const std::string& s) {
+    std::string r = std::regex_replace(s, std::regex("[^A-Za-z0-9_.@-]"), "_");
+    return r.empty() || r[0] == '.' ? "_" + r : r;
+}
+
+std::vector<Entry> listEntries(const fs::path& dir) {
+    std::vector<Entry> out;
+    for (const auto& e : fs::directory_iterator(dir)) {
+        const std::string file = e.path().filename().string();
+        if (file.empty() || file[0] == '.' || file == "__MACOSX") continue;
+        if (e.is_directory() && !e.is_symlink()) { out.push_back({file, e.path(), ""}); continue; }
+        std::smatch m;
+        if (e.is_regular_file() && std::regex_match(file, m, std::regex("(.+)\\.(zip|tar\\.gz|tgz|tar|tar\\.xz)", std::regex::icase)))
+            out.push_back({m[1], e.path(), m[2].str() == "zip" || m[2].str() == "ZIP" ? "zip" : "tar"});
+        else
+            std::cerr << "ignored: " << file << " (neither a folder nor a .zip/.tar.gz/.tgz/.tar)\n";
+    }
+    std::sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.name < b.name; });
+    return out;
+}
+
+/// Content hash of a submission: every regular file's relative path and bytes (links are not followed).
+std::string contentHash(const Entry& e, const std::string& salt) {
+    uint64_t h = fnv1a(salt);
+    if (!e.archive.empty()) return hex(fnv1a(readFile(e.path, 256u << 20), h));
+    std::vector<fs::path> files;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(e.path, ec), end; it != end; it.increment(ec)) {
+        if (ec) break;
+        if (it->is_regular_file(ec) && !it->is_symlink(ec)) files.push_back(it->path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) h = fnv1a(readFile(f, 16u << 20), fnv1a(fs::relative(f, e.path).string(), h));
+    return hex(h);
+}
+
+/// Unpacks an archive (sandboxed, as nobody) into `to`.
+void unpack(const Entry& e, const fs::path& to, const fs::path& log) {
+    fs::remove_all(to);
+    makeWritableForSandbox(to);
+    SandboxRun r;
+    const std::string in = "/in/" + std::string(e.archive == "zip" ? "submission.zip" : "submission.tar");
+    if (e.archive == "zip") r.argv = {"unzip", "-qq", "-o", in, "-d", "/out"};
+    else r.argv = {"tar", "-xf", in, "-C", "/out", "--no-same-owner", "--no-same-permissions"};
+    r.mounts = {{fs::absolute(e.path), in, false}, {to, "/out", true}};
+    r.limits.processes = 8;
+    r.timeout_seconds = 60;
+    r.log = log;
+    const RunOutcome out = runSandboxed(r);
+    if (out.exit_code != 0)
+        throw std::runtime_error(e.path.filename().string() + ": (archive): cannot unpack it (" +
+                                 firstLines(readFile(log, 4096), 2, " ") + ")");
+}
+
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string r = "\"";
+    for (char c : s) r += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+    return r + "\"";
+}
+
+std::string number(double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", x);
+    return b;
+}
+
+}  // namespace
+
+std::vector<StageResult> resultsFromJson(const json& j) {
+    std::vector<StageResult> out;
+    for (const auto& s : j.at("stages")) {
+        StageResult st;
+        st.stage = s.at("stage");
+        st.title = s.at("title");
+        st.status = s.at("status");
+        st.problem = s.at("problem");
+        for (const auto& t : s.at("tests"))
+            st.tests.push_back({t.at("name"), t.at("passed"), t.at("points"), t.at("max_points"), t.at("message")});
+        out.push_back(st);
+    }
+    return out;
+}
+
+int gradeClass(const Kit& kit, const ClassOptions& o) {
+    if (!fs::is_directory(o.class_dir)) die(o.class_dir.string() + ": (folder): the class folder does not exist");
+    const auto entries = listEntries(o.class_dir);
+    if (entries.empty()) die(o.class_dir.string() + ": (folder): no student folder or archive in it");
+    fs::create_directories(o.out / "feedback");
+    fs::create_directories(o.out / "junit");
+    const fs::path work = o.out / ".work";
+    fs::create_directories(work);
+
+    struct Row {
+        std::vector<StageResult> stages;
+        std::string status;
+        bool cached = false;
+    };
+    std::vector<Row> rows(entries.size());
+    std::mutex print;
+    int done = 0;
+    const bool tty = ::isatty(2);
+    const std::string salt = kit.fingerprint + (o.grade.use_reference ? "ref" : "own");
+    parallelFor(static_cast<int>(entries.size()), o.jobs, [&](int i) {
+        const Entry& e = entries[i];
+        const std::string name = safeName(e.name);
+        const fs::path dir = work / name;
+        Row row;
+        try {
+            bool duplicate = false;
+            for (int k = 0; k < i; ++k) duplicate = duplicate || safeName(entries[k].name) == name;
+            if (duplicate) throw std::runtime_error(e.path.filename().string() + ": (layout): a second submission named " + e.name);
+            const std::string hash = contentHash(e, salt);
+            const fs::path cache = dir / "result.json";
+            const json old = fs::exists(cache) ? json::parse(readFile(cache), nullptr, false) : json();
+            if (old.is_object() && old.value("hash", "") == hash) {
+                row.stages = resultsFromJson(old.at("results"));
+                row.status = old.value("status", "ok");
+                row.cached = true;
+            } else {
+                fs::create_directories(dir);
+                fs::path root = e.path;
+                if (!e.archive.empty()) {
+                    root = dir / "unpacked";
+                    unpack(e, root, dir / "unpack.log");
+                }
+                GradeOptions g = o.grade;
+                g.work = dir / "build";
+                g.shared_cache = work / ".shared";
+                g.jobs = 1;
+                g.progress = false;
+                try {
+                    row.stages = gradeSubmission(kit, root, g);
+                    row.status = statusLine(row.stages);
+                } catch (const std::runtime_error& err) {
+                    std::string what = err.what();
+                    if (what.rfind(root.string(), 0) == 0) what = what.substr(root.string().size());
+                    throw std::runtime_error(fs::relative(e.path, o.class_dir).string() + what);
+                }
+                writeFile(cache, json{{"hash", hash}, {"status", row.status}, {"results", resultsJson(row.stages)}}.dump(1));
+            }
+        } catch (const std::exception& err) {  // this student's layout: zero points, the reason in the gradebook
+            row.status = std::string("error: ") + err.what();
+            row.stages.clear();
+            for (const auto& st : kit.stages) row.stages.push_back(ungradedStage(kit.points_dir, st.stage, "not graded", err.what()));
+        }
+        json fb = resultsJson(row.stages);
+        fb["student"] = e.name;
+        fb["status"] = row.status;
+        writeFile(o.out / "feedback" / (name + ".json"), fb.dump(2) + "\n");
+        writeJunit(o.out / "junit" / (name + ".xml"), row.stages, e.name);
+        double pts = 0, max = 0;
+        for (const auto& s : row.stages) pts += s.points(), max += s.max_points();
+        std::lock_guard<std::mutex> lock(print);
+        ++done;
+        const int width = 30, filled = static_cast<int>(width * done / entries.size());
+        char line[512];
+        std::snprintf(line, sizeof line, "[%s%s] %d/%zu  %s: %g / %g%s%s", std::string(filled, '#').c_str(),
+                      std::string(width - filled, '.').c_str(), done, entries.size(), e.name.c_str(), pts, max,
+                      row.cached ? " (unchanged, not regraded)" : "", row.status == "ok" ? "" : ("  [" + row.status.substr(0, 120) + "]").c_str());
+        std::cerr << (tty ? "\r\033[K" : "") << line << (tty && done < static_cast<int>(entries.size()) ? "" : "\n") << std::flush;
+        rows[i] = std::move(row);
+    });
+    if (tty) std::cerr << "\n";
+
+    std::ofstream csv(o.out / "gradebook.csv");
+    csv << "student";
+    for (const auto& st : kit.stages) csv << "," << st.stage;
+    csv << ",total,max,status\n";
+    for (size_t i = 0; i < entries.size(); ++i) {
+        double pts = 0, max = 0;
+        csv << csvField(entries[i].name);
+        for (const auto& st : kit.stages) {
+            double p = 0;
+            for (const auto& s : rows[i].stages)
+                if (s.stage == st.stage) p = s.points();
+            csv << "," << number(p);
+        }
+        for (const auto& s : rows[i].stages) pts += s.points(), max += s.max_points();
+        csv << "," << number(pts) << "," << number(max) << "," << csvField(rows[i].status) << "\n";
+    }
+    csv.close();
+    std::printf("graded %zu submissions: %s (feedback/NAME.json and junit/NAME.xml beside it)\n", entries.size(),
+                (o.out / "gradebook.csv").c_str());
+    return static_cast<int>(entries.size());
+}
+
+}  // namespace grade

@@ -1,0 +1,20 @@
+// Grading a whole class: one folder or archive per student, graded in parallel, a gradebook.
+#pragma once
+#include "submission.h"
+
+namespace grade {
+
+struct ClassOptions {
+    fs::path class_dir;  ///< one folder or .zip/.tar.gz/.tgz/.tar per student
+    fs::path out;        ///< gradebook.csv, feedback/NAME.json, junit/NAME.xml, .work/ (cache)
+    int jobs = 1;        ///< students graded at the same time
+    GradeOptions grade;  ///< per student (its jobs and work are set here)
+};
+
+/// Grades every submission; returns the number of students graded. A broken or hostile
+/// submission costs that student only.
+int gradeClass(const Kit& kit, const ClassOptions& options);
+
+std::vector<StageResult> resultsFromJson(const json& j);
+
+}  // namespace grade

@@ -1,0 +1,98 @@
+#include "common.h"
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace grade {
+
+double StageResult::points() const {
+    double s = 0;
+    for (const auto& t : tests) s += t.points;
+    return s;
+}
+double StageResult::max_points() const {
+    double s = 0;
+    for (const auto& t : tests) s += t.max_points;
+    return s;
+}
+int StageResult::passed() const {
+    int n = 0;
+    for (const auto& t : tests) n += t.passed;
+    return n;
+}
+
+void die(const std::string& msg) {
+    std::cerr << "error: " << msg << "\n";
+    std::exit(1);
+}
+
+std::string readFile(const fs::path& p, size_t max_bytes) {
+    std::ifstream in(p, std::ios::binary);
+    std::string s(max_bytes, '\0');
+    in.read(s.data(), static_cast<std::streamsize>(max_bytes));
+    s.resize(static_cast<size_t>(in.gcount()));
+    return s;
+}
+
+void writeFile(const fs::path& p, const std::string& text) {
+    std::ofstream out(p, std::ios::binary);
+    out << text;
+    if (!out) die(p.string() + ": (file): cannot write");
+}
+
+uint64_t fnv1a(const std::string& data, uint64_t h) {
+    for (unsigned char c : data) h = (h ^ c) * 1099511628211ull;
+    return h;
+}
+
+std::string hex(uint64_t h) {
+    char b[17];
+    std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h));
+    return b;
+}
+
+json loadPoints(const fs::path& points_dir, const std::string& stage) {
+    fs::path file;
+    for (const auto& e : fs::directory_iterator(points_dir)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind(stage + "_", 0) == 0 && name.size() > 12 && name.substr(name.size() - 12) == ".points.json")
+            file = e.path();
+    }
+    if (file.empty()) die(points_dir.string() + ": (folder): no " + stage + "_*.points.json");
+    json j = json::parse(readFile(file), nullptr, false);
+    const std::string f = file.string();
+    if (j.is_discarded() || !j.is_object()) die(f + ": (JSON syntax): not a JSON object");
+    if (!j.contains("title") || !j["title"].is_string()) die(f + ": title: missing or not a string");
+    if (!j.contains("tests") || !j["tests"].is_object() || j["tests"].empty()) die(f + ": tests: missing, empty or not an object");
+    for (auto it = j["tests"].begin(); it != j["tests"].end(); ++it)
+        if (!it->is_number() || it->get<double>() <= 0) die(f + ": tests." + it.key() + ": points must be a number > 0");
+    j["file"] = f;
+    return j;
+}
+
+StageResult ungradedStage(const fs::path& points_dir, const std::string& stage, const std::string& status,
+                          const std::string& why) {
+    const json points = loadPoints(points_dir, stage);
+    StageResult s;
+    s.stage = stage;
+    s.title = points["title"];
+    s.status = status;
+    s.problem = why;
+    for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it)
+        s.tests.push_back({it.key(), false, 0.0, it->get<double>(), status + ": " + why});
+    return s;
+}
+
+std::string firstLines(const std::string& text, int n, const std::string& indent) {
+    std::istringstream in(text);
+    std::string line, out;
+    for (int i = 0; i < n && std::getline(in, line);) {
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        out += (i ? "\n" + indent : "") + line;
+        ++i;
+    }
+    return out;
+}
+
+}  // namespace grade

@@ -1,0 +1,50 @@
+// clothlab-grade: what the grader's parts share (results, points files, small file helpers).
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace grade {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;  // keeps the order of the points files (task order)
+
+struct TestResult {
+    std::string name;  ///< Suite.Test
+    bool passed = false;
+    double points = 0, max_points = 0;
+    std::string message;  ///< why it failed
+};
+
+struct StageResult {
+    std::string stage, title;
+    std::string status = "graded";  ///< graded | not submitted | rejected | does not compile | does not link
+    std::string problem;            ///< what the student must fix when status is not "graded"
+    std::vector<TestResult> tests;
+    double points() const;
+    double max_points() const;
+    int passed() const;
+};
+
+[[noreturn]] void die(const std::string& msg);
+std::string readFile(const fs::path& p, size_t max_bytes = 16u << 20);
+void writeFile(const fs::path& p, const std::string& text);
+
+/// 64-bit FNV-1a of `data`, continuing from `h` (a content hash for caches, not for security).
+uint64_t fnv1a(const std::string& data, uint64_t h = 1469598103934665603ull);
+std::string hex(uint64_t h);
+
+/// The points file tests/NN_name.points.json of stage NN, checked: {"title": "...", "tests": {"Suite.Test": points > 0}}.
+json loadPoints(const fs::path& points_dir, const std::string& stage);
+
+/// Every test of a stage failed with `why` (a stage that could not be graded).
+StageResult ungradedStage(const fs::path& points_dir, const std::string& stage, const std::string& status,
+                          const std::string& why);
+
+/// The first n non-empty lines of text, joined with "\n" + indent.
+std::string firstLines(const std::string& text, int n, const std::string& indent = "        ");
+
+}  // namespace grade

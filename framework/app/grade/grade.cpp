@@ -1,0 +1,138 @@
+// clothlab-grade: points per stage from the graded tests.
+//
+//   --submission DIR   grade a student's folder (screen, sandboxed compile and tests; see submission.h)
+//   --class DIR        grade one folder or archive per student into a gradebook (class_grading.h)
+//   --stage NN=EXE     run a graded binary the build made (the suite's self-checks, with --expect)
+//
+// Every test runs in its own sandboxed process (sandbox.h) and counts only when the grader saw it
+// start and pass over the private channel (graded_main.cpp). Points: tests/NN_name.points.json.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "class_grading.h"
+#include "common.h"
+#include "report.h"
+#include "sandbox.h"
+#include "submission.h"
+
+using namespace grade;
+
+int main(int argc, char** argv) {
+    CLI::App app{"clothlab-grade — per-stage points from the graded tests"};
+    std::vector<std::string> stages, only;
+    std::string points_dir, kit_file, submission, class_dir, out_dir, work, reference = "all";
+    std::string json_out, junit_out, classroom_out, expect, message, mistake, why;
+    int timeout_s = 30, jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    bool quiet = false, no_sandbox = false;
+    app.add_option("--stage", stages, "NN=EXECUTABLE: run this graded binary (self-checks of the suite)");
+    app.add_option("--kit", kit_file, "The grading kit the build wrote (build/grade-kit/kit.json)");
+    app.add_option("--submission", submission, "Grade this folder (laid out like exercises/)");
+    app.add_option("--class", class_dir, "Grade one folder or .zip/.tar.gz per student in this folder");
+    app.add_option("--out", out_dir, "With --class: where the gradebook, feedback and JUnit files go");
+    app.add_option("--work", work, "With --submission: the build folder for it (a cache)");
+    app.add_option("--only", only, "With --submission: grade only these stages (NN)");
+    app.add_option("--reference", reference, "all: the stages not graded use solutions/ (when the kit has them); none: the submission's own")
+        ->check(CLI::IsMember({"all", "none"}));
+    app.add_option("--points-dir", points_dir, "Folder with NN_name.points.json (default: the kit's)");
+    app.add_option("--json", json_out, "Write the results as JSON");
+    app.add_option("--junit", junit_out, "Write the results as JUnit XML");
+    app.add_option("--classroom", classroom_out, "Write the results for GitHub Classroom's grading reporter (JSON)");
+    app.add_option("--timeout", timeout_s, "Seconds per test")->check(CLI::PositiveNumber);
+    app.add_option("--jobs", jobs, "Processes at a time")->check(CLI::PositiveNumber);
+    app.add_flag("--no-sandbox", no_sandbox, "Run without bubblewrap (the points are then NOT trustworthy)");
+    app.add_option("--expect", expect, "Self-check of the test suite: all-pass, all-fail or some-fail")
+        ->check(CLI::IsMember({"all-pass", "all-fail", "some-fail"}));
+    app.add_option("--message", message, "With --expect all-fail: every failure must contain this text");
+    app.add_option("--mistake", mistake, "With --expect some-fail: the name of the mistake the stage was built with");
+    app.add_option("--why", why, "With --expect some-fail: what the mistake does wrong (printed with the verdict)");
+    app.add_flag("--quiet", quiet, "No per-test failure lines");
+    CLI11_PARSE(app, argc, argv);
+
+    const int modes = !stages.empty() + !submission.empty() + !class_dir.empty();
+    if (modes != 1) die("give exactly one of --stage NN=EXE, --submission DIR, --class DIR");
+    // The sandbox: required for a submission or a class (unless --no-sandbox); the self-checks run
+    // binaries the build made, sandboxed where bwrap works.
+    if (no_sandbox) {
+        setSandbox(false);
+        std::fprintf(stderr, "warning: --no-sandbox: the submission runs unconfined; these points are not trustworthy\n");
+    } else if (const std::string problem = sandboxProblem(); !problem.empty()) {
+        if (stages.empty()) die("the sandbox does not work here: " + problem + " (--no-sandbox grades without it; the points are then not trustworthy)");
+        setSandbox(false);
+    }
+
+    std::vector<StageResult> results;
+    if (!class_dir.empty() || !submission.empty()) {
+        if (kit_file.empty()) die("--submission and --class need --kit build/grade-kit/kit.json");
+        const Kit kit = loadKit(kit_file);
+        GradeOptions g;
+        g.use_reference = reference == "all";
+        g.only.insert(only.begin(), only.end());
+        g.jobs = jobs;
+        g.timeout_seconds = timeout_s;
+        for (const auto& s : g.only)
+            if (std::none_of(kit.stages.begin(), kit.stages.end(), [&](const KitStage& k) { return k.stage == s; }))
+                die("--only " + s + ": no such stage");
+        if (!class_dir.empty()) {
+            if (out_dir.empty()) die("--class needs --out DIR (the gradebook goes there)");
+            ClassOptions c{class_dir, out_dir, jobs, g};
+            gradeClass(kit, c);
+            return 0;
+        }
+        if (work.empty()) die("--submission needs --work DIR (its build folder)");
+        g.work = fs::absolute(work);
+        try {
+            results = gradeSubmission(kit, fs::absolute(submission), g);
+        } catch (const std::runtime_error& e) {
+            die(e.what());
+        }
+    } else {
+        if (points_dir.empty()) points_dir = "tests";
+        const fs::path tmp = fs::temp_directory_path() / ("clothlab-grade-" + std::to_string(::getpid()));
+        for (const auto& spec : stages) {
+            const auto eq = spec.find('=');
+            if (eq == std::string::npos) die("--stage expects NN=EXECUTABLE (got " + spec + ")");
+            const std::string nn = spec.substr(0, eq), exe = spec.substr(eq + 1);
+            if (!fs::exists(exe)) die(exe + ": (file): no such graded binary");
+            std::fprintf(stderr, "grading stage %s ...\n", nn.c_str());
+            results.push_back(gradeBinary(points_dir, nn, exe, timeout_s, jobs, tmp));
+        }
+        fs::remove_all(tmp);
+        std::sort(results.begin(), results.end(), [](const StageResult& a, const StageResult& b) { return a.stage < b.stage; });
+    }
+
+    printTable(results, !quiet);
+    if (!json_out.empty()) writeFile(json_out, resultsJson(results).dump(2) + "\n"), std::printf("wrote %s\n", json_out.c_str());
+    if (!junit_out.empty()) writeJunit(junit_out, results), std::printf("wrote %s\n", junit_out.c_str());
+    if (!classroom_out.empty()) writeFile(classroom_out, classroomJson(results).dump() + "\n"), std::printf("wrote %s\n", classroom_out.c_str());
+    if (expect.empty()) return 0;
+
+    // Self-check mode: say what does not hold and exit non-zero.
+    int bad = 0;
+    for (const auto& s : results)
+        for (const auto& t : s.tests) {
+            if (expect == "all-pass" && !t.passed) ++bad, std::printf("expected to pass: %s\n", t.name.c_str());
+            if (expect == "all-fail" && t.passed) ++bad, std::printf("passes against the stub (a test that cannot fail?): %s\n", t.name.c_str());
+            if (expect == "all-fail" && !t.passed && t.message.find(message) == std::string::npos)
+                ++bad, std::printf("fails without \"%s\" (crash or wrong message?): %s\n", message.c_str(), t.name.c_str());
+        }
+    if (expect == "some-fail") {
+        // A mistake is caught when at least one graded test fails; say which one, and what the mistake is.
+        const std::string what = (mistake.empty() ? "the mistake" : mistake) + (why.empty() ? "" : " — " + why);
+        const TestResult* first = nullptr;
+        for (const auto& s : results)
+            for (const auto& t : s.tests)
+                if (!first && !t.passed) first = &t;
+        if (first) std::printf("caught: %s (by %s)\n", what.c_str(), first->name.c_str());
+        else ++bad, std::printf("NOT caught: %s (no graded test fails)\n", what.c_str());
+    }
+    std::printf("self-check (%s): %s\n", expect.c_str(), bad == 0 ? "holds" : "DOES NOT HOLD");
+    return bad == 0 ? 0 : 1;
+}

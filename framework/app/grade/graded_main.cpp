@@ -1,0 +1,95 @@
+// The main() of every graded test binary (instead of GoogleTest's gtest_main).
+//
+// Run by hand it is plain GoogleTest. Run by the grader (clothlab-grade) with --clothlab-channel,
+// it reports over a private channel the grader opened before exec: file descriptor 3 delivers a
+// per-run secret (read here, after static initialisation, when main() starts), file descriptor 4
+// takes one line per event. A test counts only if the grader sees `start`, then `end NAME passed
+// SECRET` with the secret it sent, then `exit SECRET`, and the process exits with status 0. The
+// submission's code cannot produce these lines: it has no file-descriptor I/O (the screen rejects
+// it) and it does not know the secret; files it might write are never read.
+#include <unistd.h>
+
+#include <cstring>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+constexpr int kSecretFd = 3, kReportFd = 4;
+
+void sendLine(const std::string& line) {
+    const std::string text = line + "\n";
+    size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(kReportFd, text.data() + done, text.size() - done);
+        if (n <= 0) return;
+        done += static_cast<size_t>(n);
+    }
+}
+
+/// A failure's text on one line: backslash and newline escaped.
+std::string oneLine(const std::string& text) {
+    std::string r;
+    for (char c : text) {
+        if (c == '\\') r += "\\\\";
+        else if (c == '\n') r += "\\n";
+        else r += c;
+    }
+    return r;
+}
+
+class ChannelReporter : public ::testing::EmptyTestEventListener {
+public:
+    explicit ChannelReporter(std::string secret) : secret_(std::move(secret)) {}
+
+    void OnTestStart(const ::testing::TestInfo& t) override { sendLine("start " + name(t)); }
+
+    void OnTestPartResult(const ::testing::TestPartResult& r) override {
+        if (!r.failed()) return;
+        std::string where;  // "05_bending_test.cpp:42: " (none for an exception thrown in the test body)
+        if (r.file_name()) {
+            where = r.file_name();
+            where = where.substr(where.find_last_of('/') + 1);
+            if (r.line_number() >= 0) where += ":" + std::to_string(r.line_number());
+            where += ": ";
+        }
+        sendLine("fail " + oneLine(where + r.message()));
+    }
+
+    void OnTestEnd(const ::testing::TestInfo& t) override {
+        sendLine("end " + name(t) + (t.result()->Passed() ? " passed " : " failed ") + secret_);
+    }
+
+    void OnTestProgramEnd(const ::testing::UnitTest&) override { sendLine("exit " + secret_); }
+
+private:
+    static std::string name(const ::testing::TestInfo& t) {
+        return std::string(t.test_suite_name()) + "." + t.name();
+    }
+    std::string secret_;
+};
+
+/// Reads the secret the grader wrote to fd 3 (hex digits up to a newline), then closes fd 3.
+std::string readSecret() {
+    std::string s;
+    char c;
+    while (::read(kSecretFd, &c, 1) == 1 && c != '\n' && s.size() < 128) s += c;
+    ::close(kSecretFd);
+    return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool channel = false;
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], "--clothlab-channel") == 0) channel = true;
+    ::testing::InitGoogleTest(&argc, argv);
+    if (channel) {
+        const std::string secret = readSecret();
+        if (secret.size() < 32) return 3;  // no channel: the grader did not start this process
+        ::testing::UnitTest::GetInstance()->listeners().Append(new ChannelReporter(secret));
+    }
+    return RUN_ALL_TESTS();
+}

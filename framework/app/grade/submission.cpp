@@ -1,0 +1,475 @@
+#include "submission.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <mutex>
+#include <regex>
+#include <sstream>
+#include <memory>
+#include <stdexcept>
+
+#include "sandbox.h"
+
+namespace grade {
+
+namespace {
+
+std::vector<fs::path> paths(const json& j) {
+    std::vector<fs::path> out;
+    for (const auto& p : j) out.push_back(p.get<std::string>());
+    return out;
+}
+
+std::string run(const std::string& cmd) {
+    std::string out;
+    FILE* p = ::popen(cmd.c_str(), "r");
+    if (!p) return out;
+    char buf[4096];
+    size_t k;
+    while ((k = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, k);
+    ::pclose(p);
+    return out;
+}
+
+/// Content of a file's identity for the cache: path, size, modification time.
+std::string stamp(const fs::path& p) {
+    struct stat st {};
+    if (::stat(p.c_str(), &st) != 0) return p.string() + ":missing;";
+    return p.string() + ":" + std::to_string(st.st_size) + ":" + std::to_string(st.st_mtim.tv_sec) + "." +
+           std::to_string(st.st_mtim.tv_nsec) + ";";
+}
+
+std::mutex g_print;
+void progress(bool on, const std::string& line) {
+    if (!on) return;
+    std::lock_guard<std::mutex> lock(g_print);
+    std::cerr << line << "\n";
+}
+
+}  // namespace
+
+Kit loadKit(const fs::path& file) {
+    json j = json::parse(readFile(file), nullptr, false);
+    if (j.is_discarded()) die(file.string() + ": (JSON syntax): the grading kit is unreadable; rebuild (./lab build)");
+    Kit k;
+    k.file = file;
+    try {
+        k.compiler = j.at("compiler");
+        std::error_code ec;  // the real program: a sandbox has no /etc/alternatives to follow links through
+        if (const auto real = fs::canonical(k.compiler, ec); !ec) k.compiler = real.string();
+        for (const auto& f : j.at("compile_flags")) k.compile_flags.push_back(f);
+        k.include_dir = j.at("include_dir").get<std::string>();
+        k.system_includes = paths(j.at("system_includes"));
+        k.main_objects = paths(j.at("main_objects"));
+        k.libs = paths(j.at("libs"));
+        for (const auto& f : j.at("link_flags")) k.link_flags.push_back(f);
+        k.points_dir = j.at("points_dir").get<std::string>();
+        for (const auto& s : j.at("stages")) {
+            KitStage st{s.at("stage"), s.at("dir"), paths(s.at("tests")), paths(s.at("reference")), paths(s.at("stub")), {}};
+            k.stages.push_back(st);
+        }
+    } catch (const std::exception& e) {
+        die(file.string() + ": (grading kit): " + e.what() + "; rebuild (./lab build)");
+    }
+    std::string fp = readFile(file) + stamp(fs::canonical("/proc/self/exe"));  // a new grader regrades
+    for (const auto& st : k.stages) {
+        for (const auto* list : {&st.tests, &st.reference, &st.stub})
+            for (const auto& p : *list) fp += stamp(p);
+        fp += readFile(k.points_dir / (st.dir + ".points.json"));
+    }
+    for (const auto* list : {&k.main_objects, &k.libs})
+        for (const auto& p : *list) fp += stamp(p);
+    for (const auto& e : fs::recursive_directory_iterator(k.include_dir)) fp += stamp(e.path());
+    k.fingerprint = hex(fnv1a(fp));
+    // Symbols: each stage's own functions; what the rest of the link and the runtime define.
+    for (auto& st : k.stages)
+        for (const auto& o : st.stub)
+            for (const auto& s : definedSymbols(o))
+                if (s.rfind("_ZN8clothlab", 0) == 0) st.api.insert(s);
+    std::vector<fs::path> linked = k.main_objects;
+    linked.insert(linked.end(), k.libs.begin(), k.libs.end());
+    for (const auto& st : k.stages) {
+        linked.insert(linked.end(), st.tests.begin(), st.tests.end());
+        linked.insert(linked.end(), st.reference.begin(), st.reference.end());
+    }
+    for (const auto& f : linked) {
+        // Strong definitions only: weak ones (templates, inline functions) may be defined twice.
+        const std::string out = run("nm -P --defined-only '" + f.string() + "' 2>/dev/null");
+        std::istringstream in(out);
+        std::string name, type;
+        std::string line;
+        while (std::getline(in, line)) {
+            std::istringstream l(line);
+            if ((l >> name >> type) && type.size() == 1 && std::string("TDBRC").find(type[0]) != std::string::npos)
+                k.linked_symbols.insert(name);
+        }
+    }
+    for (const char* lib : {"libc.so.6", "libm.so.6", "libstdc++.so.6", "libgcc_s.so.1"}) {
+        std::string path = run("'" + k.compiler + "' -print-file-name=" + lib);
+        path.erase(path.find_last_not_of("\n ") + 1);
+        if (fs::exists(path)) {
+            const auto s = definedSymbols(fs::canonical(path));
+            k.runtime_symbols.insert(s.begin(), s.end());
+        }
+    }
+    if (k.runtime_symbols.count("malloc") == 0) die("cannot read the C library's symbols (nm from binutils; ./lab setup)");
+    return k;
+}
+
+std::map<std::string, fs::path> locateStages(const fs::path& root, const Kit& kit) {
+    std::map<std::string, std::vector<fs::path>> found;
+    std::error_code ec;
+    fs::recursive_directory_iterator it(root, fs::directory_options::none, ec), end;
+    if (ec) throw std::runtime_error(root.string() + ": (folder): cannot read it: " + ec.message());
+    for (; it != end; it.increment(ec)) {
+        if (ec) throw std::runtime_error(root.string() + ": (folder): cannot read it: " + ec.message());
+        const std::string name = it->path().filename().string();
+        const bool dir = it->is_directory(ec) && !it->is_symlink(ec);
+        if (!dir) continue;
+        if (name.empty() || name[0] == '.' || name == "__MACOSX" || it.depth() > 5) { it.disable_recursion_pending(); continue; }
+        for (const auto& st : kit.stages)
+            if (name == st.dir) { found[st.stage].push_back(it->path()); it.disable_recursion_pending(); }
+    }
+    std::map<std::string, fs::path> out;
+    for (auto& [stage, dirs] : found) {
+        if (dirs.size() > 1) {
+            std::string list;
+            for (const auto& d : dirs) list += (list.empty() ? "" : ", ") + fs::relative(d, root).string();
+            throw std::runtime_error(root.string() + ": (layout): " + std::to_string(dirs.size()) + " folders named " +
+                                     fs::path(dirs[0]).filename().string() + " (" + list + "); keep one");
+        }
+        out[stage] = dirs[0];
+    }
+    if (out.empty()) {
+        std::string names;
+        for (const auto& st : kit.stages) names += (names.empty() ? "" : ", ") + st.dir;
+        throw std::runtime_error(root.string() + ": (layout): no stage folder found (expected folders named " + names + ")");
+    }
+    return out;
+}
+
+namespace {
+
+struct Compiled {
+    std::string status = "graded";  // or "rejected", "does not compile"
+    std::string problem;
+    std::vector<fs::path> objects;
+};
+
+/// The stage's files copied into work/src/DIR: regular .cpp/.h/.hpp files, no links, at most 512 KiB each.
+std::vector<fs::path> copySources(const fs::path& from, const fs::path& to, std::string* problem) {
+    fs::remove_all(to);
+    fs::create_directories(to);
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(from)) {
+        const std::string name = e.path().filename().string();
+        const std::string ext = e.path().extension().string();
+        if (ext != ".cpp" && ext != ".h" && ext != ".hpp") continue;
+        if (e.is_symlink() || !e.is_regular_file()) { *problem += name + ": a link or special file, not read\n"; continue; }
+        if (!std::regex_match(name, std::regex("[A-Za-z0-9_.-]+"))) { *problem += name + ": file names may use letters, digits, _ . - only\n"; continue; }
+        if (e.file_size() > (512u << 10)) { *problem += name + ": larger than 512 KiB\n"; continue; }
+        fs::copy_file(e.path(), to / name, fs::copy_options::overwrite_existing);
+        out.push_back(to / name);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+/// One lock per cache folder: two submissions with the same files compile them once.
+std::mutex& folderLock(const fs::path& dir) {
+    static std::mutex guard;
+    static std::map<std::string, std::unique_ptr<std::mutex>> locks;
+    std::lock_guard<std::mutex> lock(guard);
+    auto& m = locks[dir.string()];
+    if (!m) m = std::make_unique<std::mutex>();
+    return *m;
+}
+
+/// Screens and compiles one stage of the submission into work/obj/NN, or into the shared cache
+/// (reused only when the stored files are byte for byte these files).
+Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder, const fs::path& work,
+                      const fs::path& shared) {
+    Compiled c;
+    const fs::path src = work / "src" / st.dir;
+    const auto files = copySources(folder, src, &c.problem);
+    std::string key = kit.fingerprint + "\n" + c.problem;
+    for (const auto& f : files) key += f.filename().string() + "\n" + std::to_string(fs::file_size(f)) + "\n" + readFile(f) + "\n";
+    const std::string hash = hex(fnv1a(key));
+    const fs::path obj = shared.empty() ? work / "obj" / st.stage : shared / (st.stage + "-" + hash);
+    std::lock_guard<std::mutex> lock(folderLock(obj));
+    const fs::path cache = obj / "result.json";
+    if (fs::exists(cache) && readFile(obj / "key.txt", 64u << 20) == key) {
+        const json j = json::parse(readFile(cache), nullptr, false);
+        if (!j.is_discarded() && j.value("hash", "") == hash) {
+            c.status = j["status"];
+            c.problem = j["problem"];
+            for (const auto& o : j["objects"]) c.objects.push_back(o.get<std::string>());
+            return c;
+        }
+    }
+    fs::remove_all(obj);
+    makeWritableForSandbox(obj);
+    std::set<std::string> headers;
+    std::vector<fs::path> units;
+    for (const auto& f : files) {
+        if (f.extension() == ".cpp") units.push_back(f);
+        else headers.insert(f.filename().string());
+    }
+    std::string findings;
+    for (const auto& f : files)
+        for (const auto& fd : screenSource(readFile(f), st.dir + "/" + f.filename().string(), headers))
+            findings += fd.where + ": " + fd.what + "\n";
+    if (units.empty()) findings += st.dir + ": no .cpp file\n";
+    if (!findings.empty()) {
+        c.status = "rejected";
+        c.problem = findings + c.problem;
+    } else {
+        for (const auto& u : units) {
+            const fs::path o = obj / (u.stem().string() + ".o");
+            SandboxRun r;
+            r.argv = {kit.compiler};
+            r.argv.insert(r.argv.end(), kit.compile_flags.begin(), kit.compile_flags.end());
+            r.argv.insert(r.argv.end(), {"-fdiagnostics-color=never", "-fmax-errors=10", "-I/kit/include"});
+            for (const auto& s : kit.system_includes) r.argv.insert(r.argv.end(), {"-isystem", s.string()});
+            r.argv.insert(r.argv.end(), {"-I/submission/" + st.dir, "-c", "/submission/" + st.dir + "/" + u.filename().string(),
+                                         "-o", "/out/" + o.filename().string()});
+            r.mounts = {{kit.include_dir, "/kit/include", false}, {src, "/submission/" + st.dir, false}, {obj, "/out", true}};
+            r.limits.cpu_seconds = 120;
+            r.limits.processes = 16;
+            r.timeout_seconds = 180;
+            r.log = work / ("compile_" + st.stage + ".log");
+            const RunOutcome out = runSandboxed(r);
+            if (out.exit_code != 0 || !fs::exists(o)) {
+                std::string log = std::regex_replace(readFile(r.log, 64u << 10), std::regex("/submission/"), "");
+                if (out.timed_out) log += "the compiler ran longer than " + std::to_string(r.timeout_seconds) + " s\n";
+                c.status = "does not compile";
+                c.problem = firstLines(log, 12, "") + "\n";
+                break;
+            }
+            c.objects.push_back(o);
+        }
+        if (c.status == "graded") {
+            ObjectRules rules;
+            rules.own_api = st.api;
+            rules.runtime = kit.runtime_symbols;
+            rules.linked = kit.linked_symbols;
+            for (const auto& other : kit.stages)
+                if (other.stage != st.stage) rules.other_stages.insert(other.api.begin(), other.api.end());
+            for (const auto& o : c.objects)
+                for (const auto& fd : screenObject(o, st.dir + "/" + o.stem().string() + ".cpp", rules)) findings += fd.where + ": " + fd.what + "\n";
+            if (!findings.empty()) {
+                c.status = "rejected";
+                c.problem = findings;
+                c.objects.clear();
+            }
+        }
+    }
+    json j = {{"hash", hash}, {"status", c.status}, {"problem", c.problem}, {"objects", json::array()}};
+    for (const auto& o : c.objects) j["objects"].push_back(o.string());
+    writeFile(obj / "key.txt", key);
+    writeFile(cache, j.dump(1));
+    return c;
+}
+
+std::string unescape(const std::string& s) {
+    std::string r;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s[i] == '\\' && i + 1 < s.size()) { r += s[i + 1] == 'n' ? '\n' : s[i + 1]; ++i; }
+        else r += s[i];
+    }
+    return r;
+}
+
+/// One test in its own sandboxed process; the verdict comes from the channel (see graded_main.cpp).
+TestResult runTest(const fs::path& exe, const std::string& name, int timeout_s, const fs::path& log) {
+    TestResult r;
+    r.name = name;
+    SandboxRun run;
+    run.argv = {"/grade/test", "--gtest_filter=" + name, "--clothlab-channel", "--gtest_color=no"};
+    run.mounts = {{exe, "/grade/test", false}};
+    run.limits.cpu_seconds = timeout_s + 1;
+    run.timeout_seconds = timeout_s;
+    run.log = log;
+    run.channel = true;
+    const RunOutcome out = runSandboxed(run);
+    bool started = false, ended_passed = false, exited = false;
+    std::string failures;
+    std::istringstream in(out.report);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line == "start " + name) started = true;
+        else if (line.rfind("fail ", 0) == 0) failures += unescape(line.substr(5)) + "\n";
+        else if (line == "end " + name + " passed " + out.secret) ended_passed = true;
+        else if (line == "exit " + out.secret) exited = true;
+    }
+    if (out.timed_out) {
+        r.message = "timed out after " + std::to_string(timeout_s) + " s (an endless loop?)";
+    } else if (!failures.empty()) {
+        r.message = failures;
+    } else if (!started) {
+        std::string tail = readFile(log, 1u << 20);
+        if (tail.size() > 600) tail = tail.substr(tail.size() - 600);
+        r.message = "the test did not start (the program ended with status " + std::to_string(out.exit_code) +
+                    " before it ran)" + (tail.empty() ? "" : ":\n" + tail);
+    } else if (!ended_passed || !exited || out.exit_code != 0) {
+        std::string tail = readFile(log, 1u << 20);
+        if (tail.size() > 600) tail = tail.substr(tail.size() - 600);
+        const int code = out.exit_code;
+        r.message = std::string("crashed or ended early (") +
+                    (code > 128 ? "signal " + std::to_string(code - 128) + (code - 128 == 11 ? ", a segmentation fault" : code - 128 == 6 ? ", abort" : code - 128 == 24 ? ", CPU time limit" : code - 128 == 25 ? ", file size limit" : "")
+                                : "exit status " + std::to_string(code)) +
+                    ")" + (tail.empty() ? "" : ":\n" + tail);
+    } else {
+        r.passed = true;
+    }
+    return r;
+}
+
+/// Runs the tests of `points` against exe with `jobs` processes at a time; after two timeouts the rest are not run.
+StageResult runStage(const fs::path& points_dir, const std::string& stage, const fs::path& exe, int timeout_s, int jobs,
+                     const fs::path& logs) {
+    const json points = loadPoints(points_dir, stage);
+    StageResult s;
+    s.stage = stage;
+    s.title = points["title"];
+    std::vector<std::string> names;
+    for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it) names.push_back(it.key());
+    s.tests.resize(names.size());
+    std::atomic<int> timeouts{0};
+    fs::create_directories(logs);
+    parallelFor(static_cast<int>(names.size()), jobs, [&](int i) {
+        TestResult r;
+        if (timeouts >= 2) {
+            r.name = names[i];
+            r.message = "not run: two tests of this stage timed out already";
+        } else {
+            r = runTest(exe, names[i], timeout_s, logs / (stage + "_" + std::to_string(i) + ".log"));
+            if (r.message.rfind("timed out", 0) == 0) ++timeouts;
+        }
+        r.max_points = points["tests"][names[i]].get<double>();
+        r.points = r.passed ? r.max_points : 0.0;
+        s.tests[i] = r;
+    });
+    return s;
+}
+
+}  // namespace
+
+StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, int timeout_seconds,
+                        int jobs, const fs::path& tmp) {
+    // The suite's integrity: the binary's tests and the points file name the same tests.
+    fs::create_directories(tmp);
+    SandboxRun list;
+    list.argv = {"/grade/test", "--gtest_list_tests"};
+    list.mounts = {{fs::absolute(exe), "/grade/test", false}};
+    list.log = tmp / ("list_" + stage + ".txt");
+    if (runSandboxed(list).exit_code != 0) die(exe.string() + ": (binary): cannot list its tests");
+    std::set<std::string> names;
+    std::istringstream in(readFile(list.log));
+    std::string line, suite;
+    while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        const auto hash = line.find("  #");
+        if (hash != std::string::npos) line = line.substr(0, hash);
+        if (line[0] != ' ') suite = line;
+        else names.insert(suite + line.substr(line.find_first_not_of(' ')));
+    }
+    const json points = loadPoints(points_dir, stage);
+    for (const auto& n : names)
+        if (!points["tests"].contains(n)) die(points["file"].get<std::string>() + ": tests." + n + ": the graded test has no points");
+    for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it)
+        if (!names.count(it.key())) die(points["file"].get<std::string>() + ": tests." + it.key() + ": no such test in " + exe.string());
+    return runStage(points_dir, stage, fs::absolute(exe), timeout_seconds, jobs, tmp);
+}
+
+std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, const GradeOptions& o) {
+    const auto folders = locateStages(root, kit);
+    fs::create_directories(o.work);
+    // 1. Screen and compile every stage the submission has (a stage graded alone still needs the
+    //    others when they come from the submission).
+    std::map<std::string, Compiled> compiled;
+    std::mutex m;
+    std::vector<const KitStage*> todo;
+    for (const auto& st : kit.stages) {
+        const bool graded = o.only.empty() || o.only.count(st.stage);
+        if (folders.count(st.stage) && (graded || !o.use_reference)) todo.push_back(&st);
+    }
+    parallelFor(static_cast<int>(todo.size()), o.jobs, [&](int i) {
+        const KitStage& st = *todo[i];
+        progress(o.progress, "compiling stage " + st.stage + " (" + st.dir + ")");
+        Compiled c = compileStage(kit, st, folders.at(st.stage), o.work, o.shared_cache);
+        std::lock_guard<std::mutex> lock(m);
+        compiled[st.stage] = std::move(c);
+    });
+    // 2. Link and run each graded stage.
+    std::vector<StageResult> results;
+    for (const auto& st : kit.stages) {
+        if (!o.only.empty() && !o.only.count(st.stage)) continue;
+        if (!folders.count(st.stage)) {
+            results.push_back(ungradedStage(kit.points_dir, st.stage, "not submitted", "no folder named " + st.dir + " in the submission"));
+            continue;
+        }
+        const Compiled& c = compiled.at(st.stage);
+        if (c.status != "graded") {
+            results.push_back(ungradedStage(kit.points_dir, st.stage, c.status, c.problem));
+            continue;
+        }
+        std::vector<fs::path> inputs = kit.main_objects;
+        inputs.insert(inputs.end(), st.tests.begin(), st.tests.end());
+        inputs.insert(inputs.end(), c.objects.begin(), c.objects.end());
+        for (const auto& other : kit.stages) {
+            if (other.stage == st.stage) continue;
+            const auto own = compiled.find(other.stage);
+            const std::vector<fs::path>* use = &other.stub;
+            if (o.use_reference && !other.reference.empty()) use = &other.reference;
+            else if (own != compiled.end() && own->second.status == "graded") use = &own->second.objects;
+            inputs.insert(inputs.end(), use->begin(), use->end());
+        }
+        inputs.insert(inputs.end(), kit.libs.begin(), kit.libs.end());
+        std::string key = kit.fingerprint;
+        for (const auto& p : inputs) key += stamp(p);  // objects of the shared cache never change in place
+        for (const auto& p : c.objects) key += readFile(p, 256u << 20);
+        const std::string hash = hex(fnv1a(key));
+        const fs::path bin = o.shared_cache.empty() ? o.work / "bin" : o.shared_cache / ("bin-" + st.stage + "-" + hash);
+        const fs::path exe = bin / ("grade_" + st.stage);
+        const fs::path hash_file = bin / ("grade_" + st.stage + ".hash");
+        std::lock_guard<std::mutex> lock(folderLock(bin));
+        if (!(fs::exists(exe) && fs::exists(hash_file) && readFile(hash_file) == hash)) {
+            progress(o.progress, "linking stage " + st.stage);
+            fs::remove(exe);
+            makeWritableForSandbox(bin);
+            SandboxRun r;
+            r.argv = {kit.compiler};
+            for (const auto& p : inputs) {
+                r.argv.push_back(p.string());
+                if (std::find_if(r.mounts.begin(), r.mounts.end(), [&](const Mount& mm) { return mm.host == p; }) == r.mounts.end())
+                    r.mounts.push_back({p, p, false});
+            }
+            r.argv.insert(r.argv.end(), kit.link_flags.begin(), kit.link_flags.end());
+            r.argv.insert(r.argv.end(), {"-o", "/out/grade_" + st.stage});
+            r.mounts.push_back({bin, "/out", true});
+            r.limits.cpu_seconds = 120;
+            r.limits.processes = 16;
+            r.limits.file_size = 512LL << 20;
+            r.timeout_seconds = 180;
+            r.log = o.work / ("link_" + st.stage + ".log");
+            const RunOutcome out = runSandboxed(r);
+            if (out.exit_code != 0 || !fs::exists(exe)) {
+                std::string log = readFile(r.log, 64u << 10);
+                log = std::regex_replace(log, std::regex("[^\n]*/obj/[0-9]+/([A-Za-z0-9_.-]+)\\.o"), "$1.cpp");
+                results.push_back(ungradedStage(kit.points_dir, st.stage, "does not link", firstLines(log, 8, "")));
+                continue;
+            }
+            writeFile(hash_file, hash);
+        }
+        progress(o.progress, "grading stage " + st.stage + " ...");
+        results.push_back(runStage(kit.points_dir, st.stage, exe, o.timeout_seconds, o.jobs, o.work / "logs"));
+    }
+    return results;
+}
+
+}  // namespace grade

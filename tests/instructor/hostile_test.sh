@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The red team: every submission in tests/instructor/hostile/ (listed in attacks.tsv) scores 0 on the
+# stage it attacks and leaves every other stage's points, every other submission's points and the
+# instructor's tree unchanged; the benign files (typical harmless student additions) are accepted.
+# All of them are graded as one class, beside the reference: each attack is the reference with the
+# attacked stage's folder replaced by the attack.
+# Usage: hostile_test.sh SOURCE_DIR GRADER KIT [name-regex]
+set -u
+root=$1 grader=$2 kit=$3 only=${4:-.}
+hostile=$root/tests/instructor/hostile
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+[[ -f $hostile/attacks.tsv ]] || fail "$hostile/attacks.tsv: missing"
+
+before=$(cd "$root" && { git status --porcelain 2>/dev/null; cat tests/*.points.json; } | cksum)
+mkdir -p "$tmp/class"
+cp -r "$root/solutions" "$tmp/class/reference"
+declare -A stage_of kind_of
+n=0
+while IFS=$'\t' read -r name stage what; do
+  [[ $name == name || -z $name || ! $name =~ $only ]] && continue
+  src="$hostile/$name"
+  [[ $name == benign ]] && src="$hostile/benign"
+  dir=$(cd "$src" && ls -d "$stage"_*/ 2>/dev/null | head -1)
+  [[ -n $dir ]] || fail "attacks.tsv: $name: no folder ${stage}_* in $src"
+  student="$name"; [[ $name == benign ]] && student="benign_$stage"
+  cp -r "$root/solutions" "$tmp/class/$student"
+  rm -rf "$tmp/class/$student/${dir%/}"
+  cp -r "$src/${dir%/}" "$tmp/class/$student/"
+  stage_of[$student]=$stage
+  kind_of[$student]=$([[ $what == benign:* ]] && echo benign || echo attack)
+  n=$((n + 1))
+done <"$hostile/attacks.tsv"
+((n > 0)) || fail "no attack matches '$only'"
+
+"$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --timeout 5 >"$tmp/grade.log" 2>&1 \
+  || { tail -20 "$tmp/grade.log"; fail "the class grading run failed"; }
+book=$tmp/out/gradebook.csv
+[[ -f $book ]] || fail "no gradebook"
+# Columns: student,01,...,06,total,max,status. The reference row gives each stage's maximum.
+header=$(head -1 "$book")
+ref=$(grep '^reference,' "$book") || fail "no reference row"
+IFS=, read -r -a H <<<"$header"
+IFS=, read -r -a R <<<"$ref"
+[[ ${R[-3]} == "${R[-2]}" ]] || fail "the reference scores ${R[-3]} of ${R[-2]}: $ref"
+bad=0
+while IFS= read -r row; do
+  IFS=, read -r -a C <<<"$row"
+  student=${C[0]}
+  [[ $student == student || $student == reference ]] && continue
+  s=${stage_of[$student]:-}
+  [[ -n $s ]] || { echo "unexpected row: $row"; bad=1; continue; }
+  status=$(echo "$row" | cut -d, -f$((${#H[@]}))-)
+  for ((i = 1; i < ${#H[@]} - 3; i++)); do
+    if [[ ${H[$i]} == "$s" ]]; then
+      [[ ${C[$i]} == 0 ]] || { echo "$student: ${C[$i]} points on the stage it attacks ($s), want 0"; bad=1; }
+    else
+      [[ ${C[$i]} == "${R[$i]}" ]] || { echo "$student: stage ${H[$i]} scores ${C[$i]}, want ${R[$i]} (an attack must not change other stages)"; bad=1; }
+    fi
+  done
+  if [[ ${kind_of[$student]} == benign ]]; then
+    [[ $status == ok ]] || { echo "$student: a benign file is not accepted: $status"; bad=1; }
+  fi
+  printf '%-34s stage %s: %s points  %s\n' "$student" "$s" "0" "$(echo "$status" | cut -c1-110)"
+done <"$book"
+after=$(cd "$root" && { git status --porcelain 2>/dev/null; cat tests/*.points.json; } | cksum)
+[[ $before == "$after" ]] || { echo "the instructor's tree changed (git status or points files)"; bad=1; }
+((bad == 0)) || { tail -5 "$tmp/grade.log"; fail "an attack got through (lines above)"; }
+echo "$n hostile or benign submissions: each attack scores 0 on its stage, no other stage or submission changes, the reference keeps full points, benign files are accepted, the tree is unchanged"
