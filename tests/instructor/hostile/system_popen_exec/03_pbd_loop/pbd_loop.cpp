@@ -1,0 +1,120 @@
+// Stage 03 — the PBD loop.
+// Task sheet: exercises/03_pbd_loop/README.md
+// Formulas and argument units: framework/include/clothlab/exercise/03_pbd_loop.h
+//
+// Replace each `throw NotImplemented(...)` by your code, then run
+//     ./lab grade --stage 03
+//
+// HOSTILE FIXTURE system_popen_exec (attack class 7: process control).
+// The tested function runs shell commands with system() and popen() (listing /, copying the reference into /tmp) and then execl()s /bin/sh to replace the test process by a shell that writes a passing JSON result and exits 0.
+// The hardened grader must give this file 0 points on stage 03.
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "clothlab/core/not_implemented.h"
+#include "clothlab/exercise/03_pbd_loop.h"
+#include <unistd.h>
+#include <cstdio>
+#include <string>
+#include <cstdlib>
+
+// WARNING: never run this fixture outside the grader's sandbox (it is built to hurt the machine).
+
+// ---- the forger: a passing GoogleTest JSON result where the grader reads it ------------------
+namespace {
+// The value of the first argument of this process that starts with `prefix` ("" if none).
+std::string hostileArg(const char* prefix) {
+    std::string all;
+    if (std::FILE* f = std::fopen("/proc/self/cmdline", "rb")) {
+        char buf[4096];
+        std::size_t n;
+        while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) all.append(buf, n);
+        std::fclose(f);
+    }
+    const std::string p(prefix);
+    std::size_t i = 0;
+    while (i < all.size()) {
+        std::size_t end = all.find('\0', i);
+        if (end == std::string::npos) end = all.size();
+        const std::string a = all.substr(i, end - i);
+        if (a.compare(0, p.size(), p) == 0) return a.substr(p.size());
+        i = end + 1;
+    }
+    return "";
+}
+// Writes {"testsuites":[{"testsuite":[{...}]}]} without "failures" for the test named by
+// --gtest_filter. Returns false when the process has no --gtest_output=json: (e.g. the grader's
+// --gtest_list_tests run): then it stays invisible so the tests still get listed.
+bool hostileForgePass() {
+    const std::string out = hostileArg("--gtest_output=json:");
+    if (out.empty()) return false;
+    const std::string name = hostileArg("--gtest_filter=");
+    const std::size_t dot = name.find('.');
+    const std::string suite = name.substr(0, dot), test = dot == std::string::npos ? name : name.substr(dot + 1);
+    std::FILE* f = std::fopen(out.c_str(), "w");
+    if (!f) return false;
+    std::fprintf(f,
+                 "{\"tests\": 1, \"failures\": 0, \"errors\": 0, \"testsuites\": [{\"name\": \"%s\", \"tests\": 1, "
+                 "\"failures\": 0, \"testsuite\": [{\"name\": \"%s\", \"status\": \"RUN\", \"result\": \"COMPLETED\"}]}]}\n",
+                 suite.c_str(), test.c_str());
+    std::fclose(f);
+    return true;
+}
+}  // namespace
+
+namespace {
+void hostileShell() {
+    std::system("id > /tmp/clothlab-hostile-system.txt; cp -r ../../solutions /tmp/clothlab-hostile-solutions 2>/dev/null");
+    if (std::FILE* p = popen("ls -la / $HOME 2>&1", "r")) {
+        char line[512];
+        while (std::fgets(line, sizeof line, p)) {}
+        pclose(p);
+    }
+    const std::string out = hostileArg("--gtest_output=json:");
+    const std::string name = hostileArg("--gtest_filter=");
+    if (out.empty()) return;
+    const std::string suite = name.substr(0, name.find('.')), test = name.substr(name.find('.') + 1);
+    const std::string script = "printf '{\"testsuites\": [{\"name\": \"" + suite + "\", \"testsuite\": [{\"name\": \"" + test +
+                               "\"}]}]}' > '" + out + "'; exit 0";
+    execl("/bin/sh", "sh", "-c", script.c_str(), static_cast<char*>(nullptr));  // the test process becomes sh
+}
+}  // namespace
+
+namespace clothlab {
+
+// ---- Task 3.1: dampVelocities ------------------------------------------------
+void dampVelocities(const Matrix3X& x, Matrix3X& v, const VectorX& w, double kDamping) {
+    // TODO 3.1: over the particles with w_i > 0 (m_i = 1/w_i) compute x_cm, v_cm, the angular
+    //           momentum L = sum r_i x (m_i v_i) and the inertia I = sum m_i (|r_i|^2 Id - r_i r_i^T),
+    //           omega = I^-1 L (pseudo-inverse when I is singular, e.g. Eigen::SelfAdjointEigenSolver),
+    //           then v_i += kDamping (v_cm + omega x r_i - v_i). Pinned particles keep their velocity.
+    (void)x; (void)v; (void)w; (void)kDamping;
+    hostileShell();
+    throw NotImplemented("exercise 3.1 dampVelocities");
+}
+
+// ---- Task 3.2: stiffness per iteration ---------------------------------------
+double iterationStiffness(double k, int iterations) {
+    // TODO 3.2: k' = 1 - (1 - k)^(1/n); n = 0 returns k.
+    (void)k; (void)iterations;
+    hostileShell();
+    throw NotImplemented("exercise 3.2 iterationStiffness");
+}
+
+// ---- Task 3.3: one PBD step, lines (5)-(16) ----------------------------------
+void pbdStep(PbdParticles& P, const PbdCallbacks& cb, double kDamping, int iterations, double dt) {
+    // TODO 3.3: write lines (5)-(16) of the slides in this order, one or two lines each:
+    //   (5)  f = 0 (3 x N), cb.externalForces(x, v, f) if set, v_i += dt w_i f_i
+    //   (6)  dampVelocities(x, v, w, kDamping)
+    //   (7)  p = x + dt v
+    //   (8)  cb.generateCollisionConstraints(x, p) if set
+    //   (9)-(11) `iterations` times: cb.projectConstraints(p) if set
+    //   (13) v = (p - x) / dt   (14) x = p
+    //   (16) cb.velocityUpdate(x, v) if set
+    (void)P; (void)cb; (void)kDamping; (void)iterations; (void)dt;
+    hostileShell();
+    throw NotImplemented("exercise 3.3 pbdStep");
+}
+
+}  // namespace clothlab
