@@ -4,9 +4,11 @@
 # instructor's tree unchanged; the benign files (typical harmless student additions) are accepted.
 # All of them are graded as one class, beside the reference: each attack is the reference with the
 # attacked stage's folder replaced by the attack.
-# Usage: hostile_test.sh SOURCE_DIR GRADER KIT [name-regex]
+# full: every submission graded on every stage (the proof that nothing else changes; ctest label
+# heavy). fast: each attack graded on the stage it attacks only, one class run per stage (./lab test).
+# Usage: hostile_test.sh SOURCE_DIR GRADER KIT full|fast [name-regex]
 set -u
-root=$1 grader=$2 kit=$3 only=${4:-.}
+root=$1 grader=$2 kit=$3 mode=$4 only=${5:-.}
 hostile=$root/tests/instructor/hostile
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
@@ -33,16 +35,44 @@ while IFS=$'\t' read -r name stage what; do
 done <"$hostile/attacks.tsv"
 ((n > 0)) || fail "no attack matches '$only'"
 
-"$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --timeout 5 >"$tmp/grade.log" 2>&1 \
-  || { tail -20 "$tmp/grade.log"; fail "the class grading run failed"; }
-book=$tmp/out/gradebook.csv
+if [[ $mode == full ]]; then
+  "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --timeout 5 >"$tmp/grade.log" 2>&1 \
+    || { tail -20 "$tmp/grade.log"; fail "the class grading run failed"; }
+  book=$tmp/out/gradebook.csv
+else  # one run per attacked stage, that stage only; the gradebooks joined (other stages read 0 there)
+  book=$tmp/gradebook.csv
+  for s in $(printf '%s\n' "${stage_of[@]}" | sort -u); do
+    mkdir -p "$tmp/class_$s"
+    mv "$tmp/class/reference" "$tmp/class_$s/reference"
+    for st in "${!stage_of[@]}"; do [[ ${stage_of[$st]} == "$s" ]] && mv "$tmp/class/$st" "$tmp/class_$s/"; done
+    "$grader" --kit "$kit" --class "$tmp/class_$s" --out "$tmp/out_$s" --only "$s" --timeout 5 >"$tmp/grade_$s.log" 2>&1 \
+      || { tail -20 "$tmp/grade_$s.log"; fail "the class grading run for stage $s failed"; }
+    mv "$tmp/class_$s/reference" "$tmp/class/reference"
+    [[ -f $book ]] || head -1 "$tmp/out_$s/gradebook.csv" >"$book"
+    tail -n +2 "$tmp/out_$s/gradebook.csv" | grep -v '^reference,' >>"$book"
+    grep '^reference,' "$tmp/out_$s/gradebook.csv" >>"$tmp/reference_rows.csv"
+  done
+  # The reference row: each stage's points from the run that graded it.
+  IFS=, read -r -a H0 <<<"$(head -1 "$book")"
+  ref_row="reference"
+  for ((i = 1; i < ${#H0[@]} - 3; i++)); do
+    p=0; while IFS=, read -r -a RR; do [[ ${RR[$i]} != 0 ]] && p=${RR[$i]}; done <"$tmp/reference_rows.csv"
+    ref_row+=",$p"
+    if printf '%s\n' "${stage_of[@]}" | grep -qx "${H0[$i]}"; then  # a graded stage: the reference keeps full points
+      pf=$(ls "$root"/tests/"${H0[$i]}"_*.points.json)
+      want=$(grep -oE '"[A-Za-z0-9_]+\.[A-Za-z0-9_]+": *[0-9.]+' "$pf" | awk -F: '{t += $2} END {print t}')
+      [[ $p == "$want" ]] || fail "the reference scores $p of $want on stage ${H0[$i]}"
+    fi
+  done
+  echo "$ref_row,0,0,ok" >>"$book"
+fi
 [[ -f $book ]] || fail "no gradebook"
 # Columns: student,01,...,06,total,max,status. The reference row gives each stage's maximum.
 header=$(head -1 "$book")
 ref=$(grep '^reference,' "$book") || fail "no reference row"
 IFS=, read -r -a H <<<"$header"
 IFS=, read -r -a R <<<"$ref"
-[[ ${R[-3]} == "${R[-2]}" ]] || fail "the reference scores ${R[-3]} of ${R[-2]}: $ref"
+[[ $mode == fast || ${R[-3]} == "${R[-2]}" ]] || fail "the reference scores ${R[-3]} of ${R[-2]}: $ref"
 bad=0
 while IFS= read -r row; do
   IFS=, read -r -a C <<<"$row"
@@ -54,16 +84,20 @@ while IFS= read -r row; do
   for ((i = 1; i < ${#H[@]} - 3; i++)); do
     if [[ ${H[$i]} == "$s" ]]; then
       [[ ${C[$i]} == 0 ]] || { echo "$student: ${C[$i]} points on the stage it attacks ($s), want 0"; bad=1; }
-    else
+    elif [[ $mode == full ]]; then
       [[ ${C[$i]} == "${R[$i]}" ]] || { echo "$student: stage ${H[$i]} scores ${C[$i]}, want ${R[$i]} (an attack must not change other stages)"; bad=1; }
     fi
   done
   if [[ ${kind_of[$student]} == benign ]]; then
     [[ $status == ok ]] || { echo "$student: a benign file is not accepted: $status"; bad=1; }
   fi
-  printf '%-34s stage %s: %s points  %s\n' "$student" "$s" "0" "$(echo "$status" | cut -c1-110)"
+  printf "%-34s stage %s  %s\n" "$student" "$s" "$(echo "$status" | cut -c1-100)"
 done <"$book"
 after=$(cd "$root" && { git status --porcelain 2>/dev/null; cat tests/*.points.json; } | cksum)
 [[ $before == "$after" ]] || { echo "the instructor's tree changed (git status or points files)"; bad=1; }
 ((bad == 0)) || { tail -5 "$tmp/grade.log"; fail "an attack got through (lines above)"; }
-echo "$n hostile or benign submissions: each attack scores 0 on its stage, no other stage or submission changes, the reference keeps full points, benign files are accepted, the tree is unchanged"
+if [[ $mode == full ]]; then
+  echo "$n hostile or benign submissions: each attack scores 0 on its stage, no other stage or submission changes, the reference keeps full points, benign files are accepted, the tree is unchanged"
+else
+  echo "$n hostile or benign submissions, each graded on the stage it attacks: every attack scores 0 there, benign files are accepted, the tree is unchanged (every stage: ctest -L heavy)"
+fi

@@ -297,8 +297,18 @@ bool allowedCpp(const std::string& d) {
     std::string s = d;
     for (const char* pre : {"typeinfo for ", "typeinfo name for ", "vtable for "})
         if (s.rfind(pre, 0) == 0) s = s.substr(std::string(pre).size());
-    for (const auto& p : prefixes)
-        if (s.rfind(p, 0) == 0) return true;
+    // A function template's name comes after its return type ("std::ostream& std::ostream::_M_insert<double>(double)"):
+    // try the name from the start and after every space outside <...> before the parameter list.
+    std::vector<std::string> names = {s};
+    int depth = 0;
+    for (size_t i = 0; i < s.size() && s[i] != '('; ++i) {
+        if (s[i] == '<') ++depth;
+        else if (s[i] == '>') --depth;
+        else if (s[i] == ' ' && depth == 0) names.push_back(s.substr(i + 1));
+    }
+    for (const auto& name : names)
+        for (const auto& p : prefixes)
+            if (name.rfind(p, 0) == 0) return true;
     return false;
 }
 

@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# ./lab grade --class on a generated class writes the right gradebook. The class mixes the layouts an
+# LMS export or a GitHub Classroom clone gives (nested folders, a .zip with an extra top folder, a
+# .tar.gz) and the submissions a course sees: the reference, untouched stubs, typical mistakes, a
+# stage that does not compile, a hostile stage, a missing stage, an unreadable layout. The expected
+# points come from the points files (full or zero) and, for a mistake, from its graded binary that
+# the build made with CMake (another path than the grader's sandboxed compile and link).
+# Usage: class_test.sh SOURCE_DIR BUILD_DIR small|full
+set -u
+root=$1 build=$2 size=${3:-small}
+grader=$build/bin/clothlab-grade kit=$build/grade-kit/kit.json
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+class=$tmp/class; mkdir -p "$class"
+stages=(); for d in "$root"/exercises/[0-9][0-9]_*/; do stages+=("$(basename "$d")"); done
+
+declare -A max expect status
+for s in "${stages[@]}"; do
+  max[${s:0:2}]=$(grep -oE '"[A-Za-z0-9_]+\.[A-Za-z0-9_]+": *[0-9.]+' "$root/tests/$s.points.json" | awk -F: '{t += $2} END {print t}')
+done
+# expect_row NAME STATUS [NN=POINTS ...]: every other stage full points.
+expect_row() {
+  local name=$1 st=$2; shift 2
+  local s; for s in "${stages[@]}"; do expect[$name,${s:0:2}]=${max[${s:0:2}]}; done
+  local kv; for kv in "$@"; do expect[$name,${kv%%=*}]=${kv#*=}; done
+  status[$name]=$st
+}
+zero_all() { local s out=(); for s in "${stages[@]}"; do out+=("${s:0:2}=0"); done; echo "${out[@]}"; }
+reference() { mkdir -p "$1"; cp -r "$root"/solutions/[0-9][0-9]_* "$1/"; }
+
+# --- the submissions ---------------------------------------------------------------------------
+reference "$class/ref_plain";                       expect_row ref_plain ok
+reference "$class/ref_exercises/exercises";         expect_row ref_exercises ok   # one folder deeper
+mkdir -p "$class/stub_untouched"; cp -r "$root"/exercises/[0-9][0-9]_* "$class/stub_untouched/"
+expect_row stub_untouched ok $(zero_all)
+reference "$class/broken_compile"; echo 'this is not C++ ;' >>"$class/broken_compile/03_pbd_loop/pbd_loop.cpp"
+expect_row broken_compile "03 does not compile" 03=0
+reference "$class/hostile_static"
+cat >>"$class/hostile_static/01_hooke/hooke.cpp" <<'CPP'
+#include <cstdlib>
+namespace { struct Forge { Forge() { std::system("echo forged"); } } forge; }
+CPP
+expect_row hostile_static "01 rejected" 01=0
+reference "$tmp/zip/frank-submission-main/exercises"
+(cd "$tmp/zip" && zip -qr "$class/zip_extra_folder.zip" frank-submission-main) || fail "zip"
+expect_row zip_extra_folder ok
+mistake_names=()
+add_mistake() {  # add_mistake NN_dir NAME
+  local dir=$1 m=$2 nn=${1:0:2} name="mistake_$2"
+  local exe=$build/bin/grade_${nn}_mistake_$m src=$build/tests/mistakes/$dir/$m
+  [[ -x $exe && -d $src ]] || fail "no built mistake $dir/$m (build first)"
+  reference "$class/$name"; rm -rf "${class:?}/$name/$dir"; mkdir -p "$class/$name/$dir"; cp "$src"/*.cpp "$class/$name/$dir/"
+  "$grader" --stage "$nn=$exe" --quiet --json "$tmp/$name.json" >/dev/null 2>&1
+  local pts; pts=$(grep -E '^  "points":' "$tmp/$name.json" | grep -oE '[0-9.]+' | head -1)
+  [[ -n $pts ]] || fail "no points for the CMake-built $exe"
+  expect_row "$name" ok "$nn=$(awk -v p="$pts" 'BEGIN { printf "%g", p }')"
+}
+add_mistake 01_hooke sign_flipped
+if [[ $size == full ]]; then
+  for i in 1 2 3 4 5 6 7; do reference "$class/ref_student$i"; expect_row "ref_student$i" ok; done
+  reference "$class/ref_lms/ref_lms/submission/exercises"; expect_row ref_lms ok
+  for i in 1 2 3; do mkdir -p "$class/stub_$i"; cp -r "$root"/exercises/[0-9][0-9]_* "$class/stub_$i/"; expect_row "stub_$i" ok $(zero_all); done
+  reference "$tmp/tar/gina"; (cd "$tmp/tar" && tar -czf "$class/tar_gz.tar.gz" gina) || fail "tar"; expect_row tar_gz ok
+  mkdir -p "$class/missing_stages"; cp -r "$root"/solutions/0[1-3]_* "$class/missing_stages/"
+  expect_row missing_stages "04 not submitted; 05 not submitted; 06 not submitted" 04=0 05=0 06=0
+  mkdir -p "$class/no_layout"; echo "my homework" >"$class/no_layout/README.txt"
+  expect_row no_layout "error" $(zero_all)
+  add_mistake 02_mfn shear_uses_structural_group
+  add_mistake 03_pbd_loop "$(ls "$build/tests/mistakes/03_pbd_loop" | grep -v '\.tmp$\|\.error\.txt$' | head -1)"
+  for d in 04_distance 05_bending 06_collision 01_hooke 02_mfn; do
+    add_mistake "$d" "$(ls "$build/tests/mistakes/$d" | grep -v '\.tmp$\|\.error\.txt$' | sed -n 2p)"
+  done
+fi
+n=$(ls "$class" | wc -l)
+
+# --- grade and compare ----------------------------------------------------------------------------
+start=$(date +%s)
+"$grader" --kit "$kit" --class "$class" --out "$tmp/out" >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the class failed"; }
+secs=$(( $(date +%s) - start ))
+book=$tmp/out/gradebook.csv
+[[ -f $book ]] || fail "no gradebook"
+bad=0 rows=0
+IFS=, read -r -a H <"$book"
+while IFS= read -r row; do
+  IFS=, read -r -a C <<<"$row"
+  name=${C[0]}; [[ $name == student ]] && continue
+  rows=$((rows + 1))
+  [[ -n ${status[$name]:-} ]] || { echo "unexpected row: $name"; bad=1; continue; }
+  for ((i = 1; i <= ${#stages[@]}; i++)); do
+    want=${expect[$name,${H[$i]}]}
+    [[ ${C[$i]} == "$want" ]] || { echo "$name: stage ${H[$i]}: ${C[$i]} points, want $want"; bad=1; }
+  done
+  got_status=$(echo "$row" | cut -d, -f$((${#stages[@]} + 4))-)
+  case ${status[$name]} in
+    error) [[ $got_status == *error* ]] || { echo "$name: status '$got_status', want an error"; bad=1; } ;;
+    *) [[ $got_status == "${status[$name]}" ]] || { echo "$name: status '$got_status', want '${status[$name]}'"; bad=1; } ;;
+  esac
+  [[ -f $tmp/out/feedback/$name.json && -f $tmp/out/junit/$name.xml ]] || { echo "$name: no feedback JSON or JUnit file"; bad=1; }
+done <"$book"
+((rows == n)) || { echo "$rows rows for $n submissions"; bad=1; }
+((bad == 0)) || { cat "$book"; fail "the gradebook is wrong (lines above)"; }
+# A second run regrades nothing (content hashes) and writes the same gradebook.
+cp "$book" "$tmp/first.csv"
+"$grader" --kit "$kit" --class "$class" --out "$tmp/out" >"$tmp/grade2.log" 2>&1 || fail "second run"
+cmp -s "$book" "$tmp/first.csv" || fail "the second run wrote another gradebook"
+[[ $(grep -c "unchanged, not regraded" "$tmp/grade2.log") -eq $n ]] || { tail "$tmp/grade2.log"; fail "the second run regraded unchanged submissions"; }
+echo "class of $n graded in ${secs} s ($(nproc) cores): gradebook, feedback and JUnit per student match the expected points; a rerun regrades nothing"
