@@ -37,3 +37,6 @@ clothlab_mistake(stencil_wrong_opposite FILE bending.cpp
 clothlab_mistake(rest_angle_zero FILE bending.cpp
   FIND "s.phi0 = g.valid ? std::atan2(g.sinPhi, g.d) : M_PI;" REPLACE "s.phi0 = 0.0;"
   WHY "rest angle 0 instead of the initial shape's angle")
+clothlab_mistake(area_absolute_epsilon FILE bending.cpp
+  FIND "if (area1 < 1e-12 || area2 < 1e-12) return g;" REPLACE "if (area1 < 1e-6 || area2 < 1e-6) return g;"
+  WHY "an absolute area epsilon: small triangles (a millimetre-sized cloth) count as degenerate and never bend back")
