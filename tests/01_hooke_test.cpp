@@ -321,3 +321,192 @@ TEST(Task1_5_VelocityVerlet, EnergyStaysBounded) {
     energyBehaviour(&velocityVerletStep, 0.01, 50.0, &worst, &ratio);
     EXPECT_LT(worst, 0.01) << "Verlet's energy error at omega dt = 0.1 stays below 1 %; it reached " << 100 * worst << " %";
 }
+
+// ============================ Randomised property tests =======================================
+// Random orientations, scales from 1 mm to 100 m, random stiffnesses and masses; seeds 1..kPropertySeeds
+// (test_util.h). Expected behaviour from physics: equivariance, energy, momentum.
+
+namespace {
+using testing_util::forEachSeed;
+using testing_util::RandomGeometry;
+
+// E = k/2 (|p1 - p0| - l0)^2, written here; its central-difference gradient with step h.
+Vec3 springEnergyGradient(const Vec3& p0, const Vec3& p1, double k, double l0, double h) {
+    auto energy = [&](const Vec3& p) { const double s = (p - p0).norm() - l0; return 0.5 * k * s * s; };
+    Vec3 grad;
+    for (int a = 0; a < 3; ++a) {
+        Vec3 e = Vec3::Zero();
+        e[a] = h;
+        grad[a] = (energy(p1 + e) - energy(p1 - e)) / (2 * h);
+    }
+    return grad;
+}
+}  // namespace
+
+TEST(Task1_1_HookeForce, RandomOrientationsScalesAndStiffnesses) {
+    // Hooke's force is the negative gradient of the spring energy (finite differences), whatever the
+    // orientation and size of the spring; making the spring s times larger makes the force s times larger.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale(), k = G.logUniform(1.0, 1e4);
+        const Eigen::Matrix3d R = G.rotation();
+        const Vec3 u = G.unitVector(), t = G.point(10.0);
+        const double len = G.uniform(0.1, 3.0), l0 = G.uniform(0.1, 3.0);  // at unit scale
+        const Vec3 a = G.point(1.0), b = a + len * u;
+        const Vec3 p0 = R * (s * a) + s * t, p1 = R * (s * b) + s * t;  // rotated, scaled, moved
+        const Vec3 f = hookeForce(p0, p1, k, s * l0);
+        const Vec3 want = -springEnergyGradient(p0, p1, k, s * l0, 1e-6 * s);
+        if (!f.allFinite() || (f - want).norm() > 1e-5 * k * s * std::max(std::abs(len - l0), 0.1))
+            return testing::AssertionFailure()
+                   << "The spring force must be minus the gradient of the spring energy E = k/2 (|p1-p0| - l0)^2 for a spring "
+                      "in any direction and of any size. For p0 = " << str(p0) << ", p1 = " << str(p1) << ", k = " << k
+                   << " N/m, l0 = " << s * l0 << " m (length scale " << s << " m) finite differences give " << str(want)
+                   << " N, your force is " << str(f) << " N.";
+        const Vec3 f1 = hookeForce(a, b, k, l0);  // the same spring, unrotated at unit scale
+        if ((f - s * (R * f1)).norm() > 1e-9 * k * s * std::max(std::abs(len - l0), 0.1))
+            return testing::AssertionFailure()
+                   << "Rotating a spring must rotate its force, and making it " << s << " times larger must make the force "
+                   << s << " times larger (F = -k (|d| - l0) d/|d|). Unit-scale spring p0 = " << str(a) << ", p1 = " << str(b)
+                   << ", l0 = " << l0 << ": force " << str(f1) << "; rotated and scaled: expected " << str(s * (R * f1))
+                   << ", got " << str(f) << ".";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task1_1_HookeForce, NearlyCoincidentAndNearlyRelaxedSprings) {
+    // Two valid near-degenerate springs: end points 1e-9 m to 1e-3 m apart (not coincident), and a
+    // spring stretched or compressed by only 1e-9 to 1e-3 of its rest length. Hooke's law holds for
+    // both: |F| = k |(|d| - l0)| along the spring.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale(), k = G.logUniform(1.0, 1e4), l0 = s * G.uniform(0.5, 2.0);
+        const Vec3 u = G.unitVector(), p0 = G.point(s);
+        const double lens[2] = {G.logUniform(1e-9, 1e-3), l0 * (1.0 + G.sign() * G.logUniform(1e-9, 1e-3))};
+        const char* what[2] = {"nearly coincident end points", "a nearly relaxed spring"};
+        for (int c = 0; c < 2; ++c) {
+            const Vec3 p1 = p0 + lens[c] * u;
+            const double len = (p1 - p0).norm();  // after rounding, as the direction (p1 - p0)/len
+            const Vec3 f = hookeForce(p0, p1, k, l0), want = -k * (len - l0) * (p1 - p0) / len;
+            if (!f.allFinite() || (f - want).norm() > 1e-6 * want.norm())
+                return testing::AssertionFailure()
+                       << "Hooke's law F = -k (|p1-p0| - l0) (p1-p0)/|p1-p0| must hold also for " << what[c]
+                       << " (a short spring is still a spring; only exactly coincident points have no direction). p0 = "
+                       << str(p0) << ", p1 = " << str(p1) << " (|p1-p0| = " << len << " m), l0 = " << l0 << " m, k = " << k
+                       << " N/m: expected " << str(want) << " N, got " << str(f)
+                       << " N. An absolute tolerance in metres (e.g. 1e-6) breaks small cloths.";
+        }
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task1_2_SpringDamping, RandomOrientationsScalesAndVelocities) {
+    // A dashpot only removes energy: its power F.(v1 - v0) = -kd ((v1 - v0).d)^2 <= 0, its force lies along
+    // the spring, and it does not depend on the spring's length (1e-9 m to 100 m) or orientation.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale(), kd = G.logUniform(1e-2, 1e2);
+        const Vec3 d = G.unitVector(), p0 = G.point(s);
+        const double len = s * G.logUniform(1e-6, 3.0);
+        const Vec3 p1 = p0 + len * d;
+        const Vec3 vc = G.point(10.0 * s), vr = G.point(10.0 * s);  // common and relative velocity
+        const Vec3 f = springDampingForce(p0, p1, vc, vc + vr, kd);
+        const Vec3 dir = (p1 - p0).normalized();
+        const double power = f.dot(vr), want = -kd * vr.dot(dir) * vr.dot(dir);
+        const double tol = 1e-9 * kd * vr.squaredNorm();
+        if (!f.allFinite() || std::abs(power - want) > tol || (f - f.dot(dir) * dir).norm() > 1e-9 * kd * vr.norm())
+            return testing::AssertionFailure()
+                   << "A damper along the spring must act along the spring and dissipate the power kd ((v1-v0).d)^2 for any "
+                      "spring length and orientation. p0 = " << str(p0) << ", p1 = " << str(p1) << " (length " << len
+                   << " m), v0 = " << str(vc) << ", v1 = " << str(vc + vr) << ", kd = " << kd << ": expected power " << want
+                   << " W, got " << power << " W from the force " << str(f) << " N.";
+        return testing::AssertionSuccess();
+    });
+}
+
+namespace {
+// Four particles with random masses (ratios up to 1e4) joined by six
+// springs written here (central forces), at a random scale and orientation.
+struct RandomSpringSystem {
+    Matrix3X x{3, 4}, v{3, 4};
+    VectorX w{4};
+    ForceField field;
+    explicit RandomSpringSystem(unsigned seed) {
+        RandomGeometry G(seed);
+        const double s = G.scale();
+        const Eigen::Matrix3d R = G.rotation();
+        for (int i = 0; i < 4; ++i) {
+            x.col(i) = R * G.point(s);
+            v.col(i) = G.point(s);
+            w[i] = 1.0 / G.logUniform(1e-2, 1e2);
+        }
+        Eigen::Matrix4d k, l0;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) k(i, j) = G.logUniform(1.0, 1e3), l0(i, j) = s * G.uniform(0.2, 1.5);
+        field = [k, l0](const Matrix3X& xs, const Matrix3X&, Matrix3X& f) {
+            f.setZero(3, xs.cols());
+            for (int i = 0; i < 4; ++i)
+                for (int j = i + 1; j < 4; ++j) {
+                    const Vec3 d = xs.col(j) - xs.col(i);
+                    const Vec3 F = -k(i, j) * (d.norm() - l0(i, j)) * d.normalized();
+                    f.col(j) += F, f.col(i) -= F;
+                }
+        };
+    }
+    Vec3 momentum() const {
+        Vec3 P = Vec3::Zero();
+        for (int i = 0; i < 4; ++i)
+            if (w[i] > 0) P += v.col(i) / w[i];
+        return P;
+    }
+    Vec3 angularMomentum() const {
+        Vec3 L = Vec3::Zero();
+        for (int i = 0; i < 4; ++i)
+            if (w[i] > 0) L += Vec3(x.col(i)).cross(Vec3(v.col(i))) / w[i];
+        return L;
+    }
+    double momentumScale() const {  // sum of m |v| and of m |x||v|: the size of the rounding errors
+        double a = 0;
+        for (int i = 0; i < 4; ++i)
+            if (w[i] > 0) a += (1.0 + x.col(i).norm()) * v.col(i).norm() / w[i];
+        return a;
+    }
+};
+
+// Ten steps of an integrator on the random spring system: momentum (and, where asked, angular
+// momentum) must stay as it was, since the springs are internal central forces.
+testing::AssertionResult conservesMomenta(Stepper step, const char* name, unsigned seed, bool angular) {
+    RandomSpringSystem S(seed);
+    const Vec3 P0 = S.momentum(), L0 = S.angularMomentum();
+    const double dt = 1e-3;
+    double scale = S.momentumScale();
+    for (int n = 0; n < 10; ++n) {
+        step(S.x, S.v, S.w, S.field, dt);
+        scale = std::max(scale, S.momentumScale());
+    }
+    if (!S.x.allFinite() || (S.momentum() - P0).norm() > 1e-11 * scale)
+        return testing::AssertionFailure()
+               << name << " must conserve the total momentum sum m_i v_i of particles joined by springs (internal forces), "
+                  "also with very different masses (inverse masses " << S.w.transpose() << " 1/kg): it went from " << str(P0)
+               << " to " << str(S.momentum()) << " kg m/s in 10 steps. Is every particle accelerated by w_i F_i?";
+    if (angular && (S.angularMomentum() - L0).norm() > 1e-11 * scale)
+        return testing::AssertionFailure()
+               << name << " must conserve the angular momentum sum x_i x m_i v_i of particles joined by springs (central "
+                  "forces): it went from " << str(L0) << " to " << str(S.angularMomentum()) << " kg m^2/s in 10 steps "
+               << "(inverse masses " << S.w.transpose() << " 1/kg).";
+    return testing::AssertionSuccess();
+}
+}  // namespace
+
+TEST(Task1_3_ExplicitEuler, ConservesMomentumWithRandomMasses) {
+    forEachSeed([](unsigned seed) { return conservesMomenta(&explicitEulerStep, "Explicit Euler", seed, false); });
+}
+
+TEST(Task1_4_SymplecticEuler, ConservesMomentumAndAngularMomentumWithRandomMasses) {
+    // Symplectic Euler conserves angular momentum exactly for central forces: x_{n+1} x v_{n+1} = x_n x v_{n+1}.
+    forEachSeed([](unsigned seed) { return conservesMomenta(&symplecticEulerStep, "Symplectic Euler", seed, true); });
+}
+
+TEST(Task1_5_VelocityVerlet, ConservesMomentumAndAngularMomentumWithRandomMasses) {
+    // Each half kick and the drift keep sum x_i x m_i v_i for central forces.
+    forEachSeed([](unsigned seed) { return conservesMomenta(&velocityVerletStep, "Velocity Verlet", seed, true); });
+}

@@ -327,3 +327,143 @@ TEST(Task2_3_ExternalForces, AddsToExistingForces) {
     EXPECT_TRUE(f.col(0).isApprox(Vec3(1, -1, 1), 1e-12)) << "forces must be added to f (f += m g), not overwrite it: want (1, -1, 1), got "
                                                           << str(f.col(0));
 }
+
+// ============================ Randomised property tests =======================================
+// Random orientations, scales from 1 mm to 100 m, random stiffnesses, damping and masses; seeds
+// 1..kPropertySeeds (test_util.h). Expected behaviour from physics, never from the reference.
+
+namespace {
+using testing_util::forEachSeed;
+using testing_util::RandomGeometry;
+
+// A 4 x 3 cloth of a random size (scale 1 mm to 100 m), randomly rotated and moved, its particles
+// displaced by up to 20 % of the spacing, moving with random velocities; structural, shear and bending
+// springs built here with random k, kd and the rest lengths of the undisplaced, unrotated grid.
+struct RandomCloth {
+    int nx = 4, ny = 3;
+    double s = 1.0;
+    Matrix3X x, v;
+    std::vector<Spring> springs;
+    RandomCloth(unsigned seed, bool damping) {
+        RandomGeometry G(seed);
+        s = G.scale();
+        const Eigen::Matrix3d R = G.rotation();
+        const Matrix3X x0 = s * gridPositions(nx, ny, 1.5, 1.0);
+        const Vec3 t = G.point(5.0 * s);
+        x.resize(3, nx * ny), v.resize(3, nx * ny);
+        for (int i = 0; i < nx * ny; ++i) {
+            x.col(i) = R * (x0.col(i) + G.point(0.1 * s)) + t;
+            v.col(i) = G.point(s);
+        }
+        auto add = [&](int i, int j, SpringType type) {
+            springs.push_back({i, j, G.logUniform(1.0, 1e3), (x0.col(j) - x0.col(i)).norm(),
+                               damping ? G.logUniform(0.1, 10.0) : 0.0, type});
+        };
+        for (int r = 0; r < ny; ++r)
+            for (int c = 0; c < nx; ++c) {
+                const int i = gridIndex(c, r, nx);
+                if (c + 1 < nx) add(i, gridIndex(c + 1, r, nx), SpringType::Structural);
+                if (r + 1 < ny) add(i, gridIndex(c, r + 1, nx), SpringType::Structural);
+                if (c + 1 < nx && r + 1 < ny) add(i, gridIndex(c + 1, r + 1, nx), SpringType::Shear);
+                if (c + 1 < nx && r + 1 < ny) add(gridIndex(c + 1, r, nx), gridIndex(c, r + 1, nx), SpringType::Shear);
+                if (c + 2 < nx) add(i, gridIndex(c + 2, r, nx), SpringType::Bending);
+                if (r + 2 < ny) add(i, gridIndex(c, r + 2, nx), SpringType::Bending);
+            }
+    }
+};
+}  // namespace
+
+TEST(Task2_2_SpringForces, RandomOrientationsScalesAndStiffnesses) {
+    // Without damping the spring forces are minus the gradient of the spring energy (finite differences),
+    // for a cloth of any size and orientation, and as internal central forces they have no net force and
+    // no net torque.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        const RandomCloth cloth(seed, false);
+        const Matrix3X v = Matrix3X::Zero(3, cloth.x.cols());
+        Matrix3X f = Matrix3X::Zero(3, cloth.x.cols());
+        addClothSpringForces(cloth.springs, cloth.x, v, f);
+        const double h = 1e-6 * cloth.s, fscale = 1e3 * cloth.s;  // k up to 1e3 N/m, stretches ~ s
+        for (int i = 0; i < cloth.x.cols(); ++i)
+            for (int d = 0; d < 3; ++d) {
+                Matrix3X xp = cloth.x, xm = cloth.x;
+                xp(d, i) += h, xm(d, i) -= h;
+                const double grad = (springEnergy(cloth.springs, xp) - springEnergy(cloth.springs, xm)) / (2 * h);
+                if (!std::isfinite(f(d, i)) || std::abs(f(d, i) + grad) > 1e-5 * fscale)
+                    return testing::AssertionFailure()
+                           << "The spring forces must be minus the gradient of the spring energy E = sum 1/2 k (|x_j-x_i| - l0)^2 "
+                              "for a cloth of any size and orientation: particle " << i << ", component " << d
+                           << ": finite differences give " << -grad << " N, your force is " << f(d, i)
+                           << " N (cloth scale " << cloth.s << " m, particle at " << str(cloth.x.col(i)) << ").";
+            }
+        Vec3 total = Vec3::Zero(), torque = Vec3::Zero();
+        for (int i = 0; i < cloth.x.cols(); ++i) total += f.col(i), torque += Vec3(cloth.x.col(i)).cross(Vec3(f.col(i)));
+        if (total.norm() > 1e-9 * fscale || torque.norm() > 1e-9 * fscale * (cloth.x.norm() + cloth.s))
+            return testing::AssertionFailure() << "Spring forces are internal and central: they must sum to zero and have no net "
+                                                  "torque; got the net force " << str(total) << " N and the net torque "
+                                               << str(torque) << " N m (cloth scale " << cloth.s << " m).";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task2_2_SpringForces, EverySpringDissipatesPowerWithRandomDamping) {
+    // With k = 0 only the dampers act: each spring (structural, shear or bending) removes the power
+    // kd ((v_j - v_i).d)^2 from the cloth, so the total power sum f_i.v_i is minus the sum of these.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomCloth cloth(seed, true);
+        for (Spring& sp : cloth.springs) sp.k = 0.0;
+        Matrix3X f = Matrix3X::Zero(3, cloth.x.cols());
+        addClothSpringForces(cloth.springs, cloth.x, cloth.v, f);
+        double power = 0.0, want = 0.0, scale = 0.0;
+        for (int i = 0; i < cloth.x.cols(); ++i) power += f.col(i).dot(cloth.v.col(i));
+        for (const Spring& sp : cloth.springs) {
+            const Vec3 dir = (cloth.x.col(sp.j) - cloth.x.col(sp.i)).normalized();
+            const Vec3 dv = cloth.v.col(sp.j) - cloth.v.col(sp.i);
+            want -= sp.kd * dv.dot(dir) * dv.dot(dir);
+            scale += sp.kd * dv.squaredNorm();
+        }
+        if (!std::isfinite(power) || std::abs(power - want) > 1e-9 * scale)
+            return testing::AssertionFailure()
+                   << "Every spring's damper (structural, shear and bending alike, each with its own kd) must dissipate the "
+                      "power kd ((v_j - v_i).d)^2: the damping forces of this cloth must do the work " << want
+                   << " W per second, yours do " << power << " W (cloth scale " << cloth.s << " m, "
+                   << cloth.springs.size() << " springs).";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task2_3_ExternalForces, GravityInAnyDirectionWithRandomMasses) {
+    // Equivalence principle: without air damping every free particle, whatever its mass, is accelerated
+    // by exactly g (a_i = w_i f_i), for g pointing in any direction; air damping -c v rotates with v.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const int n = 6;
+        const Vec3 g = G.logUniform(0.1, 100.0) * G.unitVector();
+        VectorX w(n);
+        Matrix3X v(3, n);
+        for (int i = 0; i < n; ++i) w[i] = 1.0 / G.logUniform(1e-4, 1e2), v.col(i) = G.point(10.0);
+        w[2] = 0.0;  // pinned
+        Matrix3X f = Matrix3X::Zero(3, n);
+        addClothExternalForces(w, v, g, 0.0, f);
+        for (int i = 0; i < n; ++i) {
+            const Vec3 a = w[i] > 0 ? Vec3(w[i] * f.col(i)) : Vec3(f.col(i));
+            const Vec3 want = w[i] > 0 ? g : Vec3::Zero();
+            if (!a.allFinite() || (a - want).norm() > 1e-12 * g.norm())
+                return testing::AssertionFailure()
+                       << "Gravity must accelerate every free particle by exactly g, in the direction of g (here " << str(g)
+                       << " m/s^2, not along a fixed axis), whatever its mass, and must not act on pinned ones: particle " << i
+                       << " with w = " << w[i] << " 1/kg gets the force " << str(f.col(i)) << " N, i.e. the acceleration w f = "
+                       << str(a) << " m/s^2.";
+        }
+        const double c = G.logUniform(0.01, 10.0);
+        const Eigen::Matrix3d R = G.rotation();
+        Matrix3X f1 = Matrix3X::Zero(3, n), f2 = Matrix3X::Zero(3, n);
+        addClothExternalForces(w, v, g, c, f1);
+        addClothExternalForces(w, R * v, R * g, c, f2);
+        if ((f2 - R * f1).norm() > 1e-12 * (R * f1).norm())
+            return testing::AssertionFailure()
+                   << "Rotating gravity and the velocities must rotate the forces m g - c v (no preferred axis): g = " << str(g)
+                   << " m/s^2, c = " << c << " N s/m; particle 0: got " << str(f2.col(0)) << " N after rotating, expected "
+                   << str(R * f1.col(0)) << " N.";
+        return testing::AssertionSuccess();
+    });
+}

@@ -290,3 +290,155 @@ TEST(Task3_3_PbdStep, SwingingChainKeepsItsLinks) {
     EXPECT_LT(lowest, -0.9) << "the chain must swing down (lowest end point " << lowest << " m)";
     EXPECT_LT(highest, 1e-3) << "the chain end must never rise above its start height (energy)";
 }
+
+// ============================ Randomised property tests =======================================
+// Random orientations, scales from 1 mm to 100 m, random masses (0.1 g to 100 g per particle) and
+// uneven forces; seeds 1..kPropertySeeds (test_util.h). Expected behaviour from physics.
+
+namespace {
+using testing_util::forEachSeed;
+using testing_util::RandomGeometry;
+
+// Nine particles scattered in a box of size s (three dimensions, not a coordinate plane), random masses.
+PbdParticles randomBody(RandomGeometry& G, double s, double mMin, double mMax) {
+    PbdParticles P;
+    P.x.resize(3, 9);
+    P.w.resize(9);
+    const Vec3 t = G.point(5.0 * s);
+    for (int i = 0; i < 9; ++i) P.x.col(i) = G.point(s) + t, P.w[i] = 1.0 / G.logUniform(mMin, mMax);
+    P.v = Matrix3X::Zero(3, 9);
+    P.p = P.x;
+    return P;
+}
+
+Vec3 centreOfMass(const PbdParticles& P) {
+    Vec3 c = Vec3::Zero();
+    double m = 0;
+    for (int i = 0; i < P.x.cols(); ++i)
+        if (P.w[i] > 0) c += P.x.col(i) / P.w[i], m += 1.0 / P.w[i];
+    return c / m;
+}
+}  // namespace
+
+TEST(Task3_1_DampVelocities, RigidMotionSurvivesAtAnyScaleAndMass) {
+    // A body that moves and spins rigidly, v_i = V + omega x (x_i - x_cm), has no motion to damp, whatever its
+    // size (1 mm to 100 m), its particle masses (0.1 g to 100 g) or the direction of its spin.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale();
+        PbdParticles P = randomBody(G, s, 1e-4, 1e-1);
+        const Vec3 V = G.point(s), omega = G.uniform(0.1, 10.0) * G.unitVector(), xc = centreOfMass(P);
+        for (int i = 0; i < 9; ++i) P.v.col(i) = V + omega.cross(Vec3(P.x.col(i) - xc));
+        const Matrix3X before = P.v;
+        const double k = G.uniform(0.2, 1.0);
+        dampVelocities(P.x, P.v, P.w, k);
+        const double vscale = V.norm() + omega.norm() * s;
+        if (!P.v.allFinite() || (P.v - before).cwiseAbs().maxCoeff() > 1e-8 * vscale)
+            return testing::AssertionFailure()
+                   << "A rigidly moving and spinning body must not be slowed by dampVelocities, also when it is small or light: "
+                      "size " << s << " m, particle masses from " << 1.0 / P.w.maxCoeff() << " kg to " << 1.0 / P.w.minCoeff()
+                   << " kg, spin omega = " << str(omega) << " rad/s, k_damping = " << k << ": a velocity changed by "
+                   << (P.v - before).cwiseAbs().maxCoeff() << " m/s. The moment of inertia of such a body is tiny (kg m^2 "
+                      "scale with m s^2): an absolute threshold for 'zero inertia' loses its spin.";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task3_1_DampVelocities, NearlyStraightClothKeepsItsSpinAndMomenta) {
+    // Nine particles almost on a line (0.1 % to 1 % off it): the inertia tensor is nearly, but not exactly,
+    // singular. The spin about the line is still rigid motion and must survive, and the damping of the
+    // remaining motion keeps the momentum and the angular momentum.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.logUniform(0.1, 100.0), off = G.logUniform(1e-3, 1e-2);
+        const Eigen::Matrix3d R = G.rotation();
+        const Vec3 axis = R.col(0);
+        PbdParticles P;
+        P.x.resize(3, 9), P.w.resize(9), P.v.resize(3, 9);
+        for (int i = 0; i < 9; ++i) {
+            P.x.col(i) = R * Vec3(s * G.uniform(-1, 1), off * s * G.uniform(-1, 1), off * s * G.uniform(-1, 1));
+            P.w[i] = 1.0 / G.logUniform(0.05, 1.0);
+        }
+        const Vec3 xc = centreOfMass(P), V = G.point(s), omega = G.uniform(0.5, 5.0) * axis + G.point(1.0);
+        for (int i = 0; i < 9; ++i) P.v.col(i) = V + omega.cross(Vec3(P.x.col(i) - xc));
+        const Matrix3X rigid = P.v;
+        dampVelocities(P.x, P.v, P.w, 1.0);
+        const double vscale = V.norm() + omega.norm() * s;
+        if (!P.v.allFinite() || (P.v - rigid).cwiseAbs().maxCoeff() > 1e-9 * vscale)
+            return testing::AssertionFailure()
+                   << "Particles nearly (but not exactly) on a line, " << off * 100 << " % of the length " << s
+                   << " m off it, spinning rigidly with omega = " << str(omega) << " rad/s about their centre: this is rigid "
+                      "motion and must survive k_damping = 1, including the spin about the line; a velocity changed by "
+                   << (P.v - rigid).cwiseAbs().maxCoeff() << " m/s. Only an exactly singular inertia tensor may lose an axis.";
+        for (int i = 0; i < 9; ++i) P.v.col(i) += G.point(s);  // plus relative motion
+        Vec3 P0 = Vec3::Zero(), L0 = Vec3::Zero();
+        for (int i = 0; i < 9; ++i) P0 += P.v.col(i) / P.w[i], L0 += Vec3(P.x.col(i) - xc).cross(Vec3(P.v.col(i))) / P.w[i];
+        dampVelocities(P.x, P.v, P.w, G.uniform(0.2, 1.0));
+        Vec3 P1 = Vec3::Zero(), L1 = Vec3::Zero();
+        double pscale = 0;
+        for (int i = 0; i < 9; ++i) {
+            P1 += P.v.col(i) / P.w[i], L1 += Vec3(P.x.col(i) - xc).cross(Vec3(P.v.col(i))) / P.w[i];
+            pscale += P.v.col(i).norm() / P.w[i];
+        }
+        if ((P1 - P0).norm() > 1e-9 * pscale || (L1 - L0).norm() > 1e-9 * pscale * s)
+            return testing::AssertionFailure()
+                   << "dampVelocities must keep the momentum and the angular momentum of a nearly straight body (" << off * 100
+                   << " % off a line of length " << s << " m): momentum " << str(P0) << " -> " << str(P1)
+                   << " kg m/s, angular momentum " << str(L0) << " -> " << str(L1) << " kg m^2/s.";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task3_3_PbdStep, UnevenForcesRandomMassesAndOrientations) {
+    // One PBD step with a different external force on every particle and links written here (which conserve
+    // momentum): the momentum of the free particles changes by exactly dt times the total force on them
+    // (Newton's second law), pinned particles stay put whatever force acts on them, and rotating the whole
+    // set-up rotates the result.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale(), dt = G.logUniform(1e-4, 1e-2);
+        PbdParticles P = randomBody(G, s, 1e-4, 1e-1);
+        P.w[4] = 0.0;  // pinned
+        for (int i = 0; i < 9; ++i) P.v.col(i) = G.point(s);
+        P.v.col(4).setZero();
+        Matrix3X fext(3, 9);
+        for (int i = 0; i < 9; ++i) fext.col(i) = G.point(1e-3 * s / (dt * dt));  // uneven, also on the pinned one
+        const Eigen::Matrix3d R = G.rotation();
+        auto run = [&](const Eigen::Matrix3d& Q) {
+            PbdParticles Pq = P;
+            Pq.x = Q * P.x, Pq.v = Q * P.v, Pq.p = Pq.x;
+            const VectorX w = P.w;
+            const Matrix3X f = Q * fext;
+            PbdCallbacks cb;
+            cb.externalForces = [f](const Matrix3X&, const Matrix3X&, Matrix3X& out) { out += f; };
+            cb.projectConstraints = [w, s](Matrix3X& p) {
+                for (int i = 0; i + 1 < 9; ++i)
+                    if (i != 3 && i != 4) projectLink(p, w, i, i + 1, 0.5 * s);  // links among free particles only
+            };
+            pbdStep(Pq, cb, 0.0, 3, dt);
+            return Pq;
+        };
+        const PbdParticles A = run(Eigen::Matrix3d::Identity()), B = run(R);
+        Vec3 dP = Vec3::Zero(), F = Vec3::Zero();
+        double pscale = 0;
+        for (int i = 0; i < 9; ++i)
+            if (P.w[i] > 0) {
+                dP += (A.v.col(i) - P.v.col(i)) / P.w[i], F += fext.col(i);
+                pscale += (A.v.col(i).norm() + P.v.col(i).norm()) / P.w[i];
+            }
+        if (!A.x.allFinite() || (dP - dt * F).norm() > 1e-9 * pscale)
+            return testing::AssertionFailure()
+                   << "Newton's second law: over one step the momentum of the free particles must change by dt times the total "
+                      "external force on them, " << str(dt * F) << " N s, with a different force on every particle and masses "
+                      "from " << 1.0 / P.w.maxCoeff() << " kg to " << 1.0 / P.w.minCoeff() << " kg; it changed by "
+                   << str(dP) << " N s (dt = " << dt << " s). Line (5) is v_i += dt w_i f_i for each particle.";
+        if ((A.x.col(4) - P.x.col(4)).norm() != 0.0)
+            return testing::AssertionFailure() << "A pinned particle (w = 0) must not move even when a force acts on it; it moved from "
+                                               << str(P.x.col(4)) << " to " << str(A.x.col(4)) << ".";
+        if ((B.x - R * A.x).cwiseAbs().maxCoeff() > 1e-9 * (s + P.x.cwiseAbs().maxCoeff()))
+            return testing::AssertionFailure() << "Rotating the whole set-up (positions, velocities, forces) must rotate the result of "
+                                                  "a PBD step: a particle ended " << (B.x - R * A.x).cwiseAbs().maxCoeff()
+                                               << " m away from the rotated result.";
+        return testing::AssertionSuccess();
+    });
+}

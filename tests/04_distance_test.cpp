@@ -112,3 +112,134 @@ TEST(Task4_3_ProjectDistance, SatisfiedConstraintDoesNotMove) {
     const auto c = projectDistanceConstraint(kP1, kP2, 1.0, 2.0, d, 1.0);
     EXPECT_LT(c.dp1.norm() + c.dp2.norm(), 1e-12) << "C = 0: the corrections must vanish";
 }
+
+// ============================ Randomised property tests =======================================
+// Random orientations, scales from 1 mm to 100 m, random inverse masses and stiffnesses; seeds
+// 1..kPropertySeeds (test_util.h). Expected behaviour from geometry and physics, not from your code.
+
+namespace {
+using testing_util::forEachSeed;
+using testing_util::RandomGeometry;
+
+// A random constraint: p1, p2 at distance len along a random direction, rest length d, both in metres.
+struct RandomPair {
+    double s, len, d;
+    Vec3 p1, p2;
+    RandomPair(RandomGeometry& G, double lenFactor) {
+        s = G.scale();
+        len = lenFactor * s;
+        d = s * G.uniform(0.1, 3.0);
+        p1 = G.point(5.0 * s);
+        p2 = p1 + len * G.unitVector();
+        len = (p1 - p2).norm();  // after rounding
+    }
+};
+}  // namespace
+
+TEST(Task4_1_DistanceConstraint, RandomOrientationsAndScales) {
+    // C is a length: it does not change when the pair is rotated or moved, and it scales with the pair.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        RandomPair c(G, G.uniform(0.1, 3.0));
+        const Eigen::Matrix3d R = G.rotation();
+        const Vec3 t = G.point(c.s);
+        const double want = C(c.p1, c.p2, c.d), got = distanceConstraint(R * c.p1 + t, R * c.p2 + t, c.d);
+        if (std::abs(got - want) > 1e-12 * (c.len + c.d + c.p1.norm()))
+            return testing::AssertionFailure() << "C = |p1 - p2| - d must not depend on the orientation or position of the pair: "
+                                                  "p1 = " << str(R * c.p1 + t) << ", p2 = " << str(R * c.p2 + t) << ", d = " << c.d
+                                               << " m: expected " << want << " m, got " << got << " m.";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task4_2_DistanceGradient, RandomOrientationsScalesAndNearlyCoincidentPoints) {
+    // The gradient of a distance is the unit vector from p2 to p1: checked by finite differences for pairs
+    // 0.1 s to 3 s apart, and for nearly coincident (1e-9 m to 1e-4 m apart, but not coincident) pairs by its
+    // length 1 and its direction.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        RandomPair c(G, G.uniform(0.1, 3.0));
+        const Vec3 g = distanceGradient(c.p1, c.p2);
+        const double h = 1e-6 * c.s;
+        for (int a = 0; a < 3; ++a) {
+            Vec3 e = Vec3::Zero();
+            e[a] = h;
+            const double fd = (C(c.p1 + e, c.p2, c.d) - C(c.p1 - e, c.p2, c.d)) / (2 * h);
+            if (!std::isfinite(g[a]) || std::abs(g[a] - fd) > 1e-6)
+                return testing::AssertionFailure() << "grad_p1 C must match finite differences for a pair of any size and "
+                                                      "orientation: p1 = " << str(c.p1) << ", p2 = " << str(c.p2)
+                                                   << ": component " << a << " is " << g[a] << ", finite differences give " << fd << ".";
+        }
+        const Vec3 p2 = c.p1 + G.logUniform(1e-9, 1e-4) * G.unitVector();
+        const Vec3 e = c.p1 - p2;
+        const Vec3 gn = distanceGradient(c.p1, p2);
+        if (!gn.allFinite() || std::abs(gn.norm() - 1.0) > 1e-9 || std::abs(gn.dot(e) - e.norm()) > 1e-9 * e.norm())
+            return testing::AssertionFailure()
+                   << "Two points " << e.norm() << " m apart are close but not coincident: the gradient must still be the unit "
+                      "vector (p1 - p2)/|p1 - p2| = " << str(e / e.norm()) << ", got " << str(gn)
+                   << " (p1 = " << str(c.p1) << ", p2 = " << str(p2) << "). Only coincident points (|p1 - p2| < 1e-12 m) have "
+                      "no direction; an absolute tolerance like 1e-6 m is too large for small cloths.";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task4_3_ProjectDistance, RandomOrientationsScalesAndMasses) {
+    // For random pairs (1 mm to 100 m), inverse masses (ratios up to 1e6, sometimes one pinned) and stiffness
+    // k: the projection removes the fraction k of C, moves only along p1 - p2, keeps the momentum
+    // sum m_i dp_i = 0 and the angular momentum sum p_i x m_i dp_i = 0, and a pinned particle stays put.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        RandomPair c(G, G.uniform(0.1, 3.0));
+        double w1 = G.logUniform(1e-3, 1e3), w2 = G.logUniform(1e-3, 1e3);
+        const int pin = static_cast<int>(G.uniform(0.0, 4.0));  // 0: pin p1, 1: pin p2, else none
+        if (pin == 0) w1 = 0.0;
+        if (pin == 1) w2 = 0.0;
+        const double k = G.uniform(0.05, 1.0);
+        const auto r = projectDistanceConstraint(c.p1, c.p2, w1, w2, c.d, k);
+        const double before = C(c.p1, c.p2, c.d), after = C(c.p1 + r.dp1, c.p2 + r.dp2, c.d);
+        std::ostringstream in;
+        in << "p1 = " << str(c.p1) << ", p2 = " << str(c.p2) << ", w1 = " << w1 << ", w2 = " << w2 << " 1/kg, d = " << c.d
+           << " m, k = " << k;
+        if (!r.dp1.allFinite() || !r.dp2.allFinite() || std::abs(after - (1.0 - k) * before) > 1e-9 * (c.len + c.d))
+            return testing::AssertionFailure() << "A projection with stiffness k must leave the fraction (1 - k) of the error C: "
+                                               << in.str() << ": C went from " << before << " m to " << after << " m, expected "
+                                               << (1.0 - k) * before << " m.";
+        const Vec3 n = (c.p1 - c.p2) / c.len;
+        if ((r.dp1 - r.dp1.dot(n) * n).norm() > 1e-9 * r.dp1.norm() + 1e-15 * c.s ||
+            (r.dp2 - r.dp2.dot(n) * n).norm() > 1e-9 * r.dp2.norm() + 1e-15 * c.s)
+            return testing::AssertionFailure() << "The corrections must lie along p1 - p2 (the constraint's gradient), in any "
+                                                  "orientation: " << in.str() << ": dp1 = " << str(r.dp1) << ", dp2 = " << str(r.dp2) << ".";
+        if ((w1 == 0.0 && r.dp1.norm() != 0.0) || (w2 == 0.0 && r.dp2.norm() != 0.0))
+            return testing::AssertionFailure() << "A pinned particle (w = 0) must not move: " << in.str() << ": dp1 = " << str(r.dp1)
+                                               << ", dp2 = " << str(r.dp2) << ".";
+        if (w1 > 0 && w2 > 0) {
+            const Vec3 P = r.dp1 / w1 + r.dp2 / w2, L = c.p1.cross(r.dp1) / w1 + c.p2.cross(r.dp2) / w2;
+            const double scale = r.dp1.norm() / w1 + r.dp2.norm() / w2;
+            if (P.norm() > 1e-9 * scale || L.norm() > 1e-9 * scale * (c.p1.norm() + c.p2.norm()))
+                return testing::AssertionFailure() << "The projection must create no momentum (sum m_i dp_i = 0) and no angular "
+                                                      "momentum (sum p_i x m_i dp_i = 0), so heavy particles move less: "
+                                                   << in.str() << ": sum m_i dp_i = " << str(P) << ", sum p_i x m_i dp_i = " << str(L) << ".";
+        }
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task4_3_ProjectDistance, NearlyCoincidentPointsArePushedApart) {
+    // Points 1e-9 m to 1e-4 m apart (close, not coincident) with a rest length of 0.1 s to 3 s: the constraint
+    // is badly compressed and one projection with k = 1 must push them apart to exactly d.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        RandomPair c(G, 0.0);
+        const Vec3 p2 = c.p1 + G.logUniform(1e-9, 1e-4) * G.unitVector();
+        const double w1 = G.logUniform(1e-2, 1e2), w2 = G.logUniform(1e-2, 1e2);
+        const auto r = projectDistanceConstraint(c.p1, p2, w1, w2, c.d, 1.0);
+        const double after = (c.p1 + r.dp1 - p2 - r.dp2).norm();
+        if (!r.dp1.allFinite() || !r.dp2.allFinite() || std::abs(after - c.d) > 1e-9 * c.d)
+            return testing::AssertionFailure()
+                   << "Two points only " << (c.p1 - p2).norm() << " m apart (close, but not coincident) with rest length d = "
+                   << c.d << " m must be pushed apart to exactly d by one projection with k = 1; the distance afterwards is "
+                   << after << " m (p1 = " << str(c.p1) << ", p2 = " << str(p2) << ", w1 = " << w1 << ", w2 = " << w2
+                   << "). Only coincident points (|p1 - p2| < 1e-12 m) have no direction.";
+        return testing::AssertionSuccess();
+    });
+}

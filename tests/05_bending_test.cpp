@@ -289,3 +289,160 @@ TEST(Task5_3_BendingStencils, FoldedClothStaysAtItsRestAngle) {
         }
     EXPECT_LT(rms(q), 0.1 * before) << "20 sweeps of bending projections must reduce the RMS angle error";
 }
+
+// ============================ Randomised property tests =======================================
+// Random stencils, orientations, scales from 1 mm to 100 m and inverse masses; seeds 1..kPropertySeeds
+// (test_util.h). Expected values from the independent dOf/angleOf above, finite differences and physics.
+
+namespace {
+using testing_util::forEachSeed;
+using testing_util::RandomGeometry;
+
+// A random stencil with dihedral angle phi: built in a frame with the edge p1-p2 along x, p3 at height h3
+// above the edge in the x-y plane and p4 at height h4 rotated by phi about the edge (phi = pi: flat),
+// then scaled by s, rotated and moved. h3 = sliver * (0.3 .. 1.5): sliver < 1 gives a thin triangle.
+struct RandomStencil {
+    Stencil st;
+    double s = 1.0, phi = 0.0;
+    RandomStencil(RandomGeometry& G, double sliver = 1.0) {
+        s = G.scale();
+        phi = G.uniform(0.3, kPi - 0.3);
+        const double L = G.uniform(0.5, 1.5), h3 = sliver * G.uniform(0.3, 1.5), h4 = G.uniform(0.3, 1.5);
+        const Vec3 local[4] = {Vec3::Zero(), Vec3(L, 0, 0), Vec3(G.uniform(-0.3, 1.3) * L, h3, 0),
+                               Vec3(G.uniform(-0.3, 1.3) * L, h4 * std::cos(phi), h4 * std::sin(phi))};
+        const Eigen::Matrix3d R = G.rotation();
+        const Vec3 t = G.point(s);
+        for (int i = 0; i < 4; ++i) st.p[i] = R * (s * local[i]) + t;
+    }
+    std::string describe() const {
+        std::ostringstream o;
+        o << "p1 = " << str(st.p[0]) << ", p2 = " << str(st.p[1]) << ", p3 = " << str(st.p[2]) << ", p4 = " << str(st.p[3])
+          << " (size " << s << " m, dihedral angle " << phi << " rad)";
+        return o.str();
+    }
+};
+
+// The q-vectors against central differences of d with step h; empty string if they agree within tol.
+std::string compareWithFiniteDifferences(const Stencil& s, const BendingGradients& g, double h, double tol) {
+    const Vec3 q[4] = {g.q1, g.q2, g.q3, g.q4};
+    for (int i = 0; i < 4; ++i)
+        for (int a = 0; a < 3; ++a) {
+            Stencil plus = s, minus = s;
+            plus.p[i][a] += h, minus.p[i][a] -= h;
+            const double fd =
+                (dOf(plus.p[0], plus.p[1], plus.p[2], plus.p[3]) - dOf(minus.p[0], minus.p[1], minus.p[2], minus.p[3])) / (2 * h);
+            if (!std::isfinite(q[i][a]) || std::abs(q[i][a] - fd) > tol) {
+                std::ostringstream o;
+                o << "q" << i + 1 << " = " << str(q[i]) << ": component " << a << " should be dd/dp = " << fd
+                  << " (finite differences)";
+                return o.str();
+            }
+        }
+    return "";
+}
+}  // namespace
+
+TEST(Task5_1_BendingGradients, RandomStencilsAtAnyScaleAndOrientation) {
+    // d = cos(phi) and sin(phi) do not depend on the stencil's size, orientation or position; the q-vectors are
+    // the gradients of d (finite differences), scale as 1/size, and sum to zero (moving all four points
+    // together does not bend the stencil).
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const RandomStencil r(G);
+        const Stencil& s = r.st;
+        const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
+        if (!g.valid || std::abs(g.d - std::cos(r.phi)) > 1e-9 || std::abs(g.sinPhi - std::sin(r.phi)) > 1e-9)
+            return testing::AssertionFailure() << "For a stencil of any size and orientation, d must be cos(phi) and sinPhi must be "
+                                                  "sin(phi) of the dihedral angle phi = " << r.phi << " rad: got valid = " << g.valid
+                                               << ", d = " << g.d << " (want " << std::cos(r.phi) << "), sinPhi = " << g.sinPhi
+                                               << " (want " << std::sin(r.phi) << ") for " << r.describe()
+                                               << ". An absolute area tolerance (m^2) fails for small stencils.";
+        const std::string fd = compareWithFiniteDifferences(s, g, 1e-6 * r.s, 1e-5 / r.s);
+        if (!fd.empty())
+            return testing::AssertionFailure() << "The q-vectors must be the gradients dd/dp_i for a stencil of any size and "
+                                                  "orientation: " << fd << "; " << r.describe() << ".";
+        const Vec3 sum = g.q1 + g.q2 + g.q3 + g.q4;
+        if (sum.norm() > 1e-9 / r.s)
+            return testing::AssertionFailure() << "Moving all four points together does not bend the stencil, so q1 + q2 + q3 + q4 "
+                                                  "must be zero; got " << str(sum) << " for " << r.describe() << ".";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task5_1_BendingGradients, NearlyDegenerateTrianglesStillHaveGradients) {
+    // A sliver: p3 only 1e-4 to 3e-2 of the edge length away from the edge line, at any size. The triangle
+    // is thin but has an area (at least 1e-11 m^2 here), so it has a normal and d has a gradient.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double sliver = G.logUniform(1e-4, 3e-2);
+        const RandomStencil r(G, sliver);
+        const Stencil& s = r.st;
+        const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
+        const double area = (s.p[1] - s.p[0]).cross(s.p[2] - s.p[0]).norm();
+        if (!g.valid)
+            return testing::AssertionFailure() << "A thin triangle with the area " << area << " m^2 (above the 1e-12 m^2 of the task) "
+                                                  "is valid and must give valid = true: " << r.describe()
+                                               << ". An absolute area tolerance like 1e-6 m^2 rejects every triangle of a "
+                                                  "millimetre-sized cloth.";
+        const double qmax = std::max({g.q1.norm(), g.q2.norm(), g.q3.norm(), g.q4.norm()});
+        const std::string fd = compareWithFiniteDifferences(s, g, 1e-4 * sliver * r.s, 1e-5 * qmax);
+        if (!fd.empty())
+            return testing::AssertionFailure() << "The q-vectors of a thin (but valid) triangle must still be the gradients of d: "
+                                               << fd << "; " << r.describe() << ", p3 " << sliver << " edge lengths off the edge.";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task5_2_ProjectBending, RandomStencilsMassesAndScales) {
+    // A random stencil (any size and orientation) bent 0.01 to 0.03 rad away from its rest angle, random inverse
+    // masses (ratios up to 1e4, sometimes one pinned). The projection is a Newton step on C: with a small
+    // stiffness k it removes the fraction k of the error to first order (checked with k = 0.01), and with
+    // k = 1 it reduces |C|. It keeps the momentum sum m_i dp_i and the angular momentum sum p_i x m_i dp_i at
+    // zero, and does not move a pinned particle.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const RandomStencil r(G);
+        const Stencil& s = r.st;
+        double w[4];
+        for (double& wi : w) wi = G.logUniform(1e-2, 1e2);
+        const int pin = static_cast<int>(G.uniform(0.0, 8.0));  // 0..3: that particle pinned, else none
+        if (pin < 4) w[pin] = 0.0;
+        const double phi0 = r.phi + G.sign() * G.uniform(0.01, 0.03);
+        std::ostringstream in;
+        in << r.describe() << ", rest angle " << phi0 << " rad, w = (" << w[0] << ", " << w[1] << ", " << w[2] << ", " << w[3]
+           << ") 1/kg";
+        const double before = angleOf(s.p[0], s.p[1], s.p[2], s.p[3]) - phi0;
+        const double k = 0.01;
+        const auto small = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], w[0], w[1], w[2], w[3], phi0, k);
+        const double removed = before - (angleAfter(s, small) - phi0);
+        if (!(std::abs(removed - k * before) < 0.05 * k * std::abs(before)))
+            return testing::AssertionFailure() << "The bending projection is a Newton step on C: with stiffness k = " << k
+                                               << " it must remove the fraction k of the error (to first order), for any size, "
+                                                  "orientation and masses; it removed " << removed << " rad of C = " << before
+                                               << " rad instead of " << k * before << " rad, for " << in.str()
+                                               << ". Check the weights w_j in sum w_j |q_j|^2.";
+        const auto c = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], w[0], w[1], w[2], w[3], phi0, 1.0);
+        const Vec3 dp[4] = {c.dp1, c.dp2, c.dp3, c.dp4};
+        const double after = angleAfter(s, c) - phi0;
+        if (!(std::abs(after) < std::abs(before)))
+            return testing::AssertionFailure() << "One projection with k = 1 must reduce a small bending error, for any size, "
+                                                  "orientation and masses: |C| went from " << std::abs(before) << " rad to "
+                                               << std::abs(after) << " rad for " << in.str() << ".";
+        Vec3 P = Vec3::Zero(), L = Vec3::Zero();
+        double scale = 0.0;
+        for (int i = 0; i < 4; ++i) {
+            if (w[i] == 0.0) {
+                if (dp[i].norm() != 0.0)
+                    return testing::AssertionFailure() << "A pinned particle (w = 0) must not move; p" << i + 1 << " moved by "
+                                                       << str(dp[i]) << " for " << in.str() << ".";
+                continue;
+            }
+            P += dp[i] / w[i], L += s.p[i].cross(dp[i]) / w[i], scale += dp[i].norm() / w[i];
+        }
+        if (pin >= 4 && (P.norm() > 1e-9 * scale || L.norm() > 1e-9 * scale * (r.s + s.p[0].norm())))
+            return testing::AssertionFailure() << "The bending projection is internal: it must create no momentum (sum m_i dp_i = "
+                                               << str(P) << ") and no angular momentum (sum p_i x m_i dp_i = " << str(L)
+                                               << "), for " << in.str() << ".";
+        return testing::AssertionSuccess();
+    });
+}

@@ -327,3 +327,158 @@ TEST(Task6_4_CollisionSteps, RestitutionGivesTheAnalyticReboundHeight) {
         EXPECT_NEAR(apex, e * e * H, 0.02 * e * e * H) << "e = " << e << ": rebound height must be e^2 H = " << e * e * H << " m";
     }
 }
+
+// ============================ Randomised property tests =======================================
+// Planes and spheres in any orientation and position, sizes from 1 mm to 100 m, oblique paths that hit
+// anywhere (not at a symmetric point), random friction and restitution; seeds 1..kPropertySeeds
+// (test_util.h). Expected behaviour from geometry and the laws of Coulomb and Newton.
+
+namespace {
+using testing_util::forEachSeed;
+using testing_util::RandomGeometry;
+}  // namespace
+
+TEST(Task6_1_PlaneConstraint, RandomOrientationsAndScales) {
+    // A plane in any orientation: the particle's distance to it is measured along the plane's normal
+    // (not as a height), and a constraint exists exactly when p ends closer than h.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale(), h = s * G.logUniform(1e-3, 1e-1), dt = G.logUniform(1e-4, 1e-2);
+        const Collider c = plane(G.point(5.0 * s), G.unitVector(), G.uniform(0.0, 1.0), G.uniform(0.0, 1.0));
+        const Vec3 t = G.perpendicularTo(c.normal);
+        const Vec3 x = c.point + s * G.uniform(-3, 3) * t + s * G.uniform(0.2, 2.0) * c.normal;
+        const double end = s * G.uniform(-2.0, 2.0);  // signed distance of p from the plane
+        const Vec3 p = c.point + s * G.uniform(-3, 3) * G.perpendicularTo(c.normal) + end * c.normal;
+        CollisionConstraint cc;
+        const bool hit = generatePlaneConstraint(5, x, p, c, h, dt, &cc);
+        std::ostringstream in;
+        in << "plane through " << str(c.point) << " with normal " << str(c.normal) << ", x = " << str(x) << ", p = " << str(p)
+           << " (p is " << end << " m from the plane along its normal), h = " << h << " m";
+        if (hit != (end < h))
+            return testing::AssertionFailure() << "A constraint must be generated exactly when p ends closer to the plane than the "
+                                                  "thickness h, measured along the plane's normal (the plane may be tilted in any "
+                                                  "direction): " << in.str() << "; yours says " << (hit ? "hit" : "no hit") << ".";
+        if (hit && ((cc.n - c.normal).norm() > 1e-12 || std::abs((cc.q - c.point).dot(c.normal)) > 1e-9 * s ||
+                    (cc.start - x).norm() > 1e-12 * (x.norm() + s) ||
+                    std::abs(cc.vnBefore - (p - x).dot(c.normal) / dt) > 1e-9 * (p - x).norm() / dt))
+            return testing::AssertionFailure() << "The constraint of a tilted plane must have n_s = the plane's normal, q_s on the plane, "
+                                                  "start = x and vnBefore = (p - x).n_s / dt: " << in.str() << "; got n_s = "
+                                               << str(cc.n) << ", q_s = " << str(cc.q) << ", vnBefore = " << cc.vnBefore << " m/s.";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task6_2_SphereConstraint, ObliquePathsEnterAnywhere) {
+    // A path that enters the inflated sphere (radius R + h) obliquely at a random point e (not aimed at the
+    // centre), ending inside or beyond the sphere: the normal is the sphere's normal at e, wherever x and p are.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale(), dt = G.logUniform(1e-4, 1e-2);
+        const Collider c = sphere(G.point(5.0 * s), s * G.uniform(0.5, 2.0), G.uniform(0, 1), G.uniform(0, 1));
+        const double h = s * G.logUniform(1e-3, 1e-1), Rh = c.radius + h;
+        const Vec3 ne = G.unitVector(), e = c.point + Rh * ne;             // entry point and its normal
+        const double alpha = G.uniform(0.15, 1.35);                         // angle to the inward normal
+        const Vec3 u = -std::cos(alpha) * ne + std::sin(alpha) * G.perpendicularTo(ne);  // unit direction of the path
+        const Vec3 x = e - s * G.uniform(0.1, 2.0) * u;
+        const Vec3 p = e + 2.0 * Rh * std::cos(alpha) * G.uniform(0.05, 1.5) * u;  // chord length 2 Rh cos(alpha)
+        CollisionConstraint cc;
+        const bool hit = generateSphereConstraint(1, x, p, c, h, dt, &cc);
+        std::ostringstream in;
+        in << "sphere around " << str(c.point) << ", R = " << c.radius << " m, h = " << h << " m, path x = " << str(x) << " -> p = "
+           << str(p) << ", entering at " << str(e) << " at " << alpha << " rad to the inward normal";
+        if (!hit)
+            return testing::AssertionFailure() << "A path that enters the sphere (radius R + h) obliquely must give a constraint: "
+                                               << in.str() << ".";
+        if ((cc.n - ne).norm() > 1e-6 || (cc.q - (c.point + c.radius * ne)).norm() > 1e-6 * s)
+            return testing::AssertionFailure() << "n_s must be the sphere's normal where the path enters, " << str(ne)
+                                               << ", and q_s = c + R n_s = " << str(c.point + c.radius * ne)
+                                               << " (not the normal towards x or p, which agree only for a path aimed at the "
+                                                  "centre): " << in.str() << "; got n_s = " << str(cc.n) << ", q_s = " << str(cc.q) << ".";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task6_4_VelocityUpdate, ObliqueLandingObeysCoulombAndRestitution) {
+    // A particle lands obliquely on a tilted plane during the step (x above the thickness, p below), friction
+    // mu and restitution e random. After generate, project and v = (p - x)/dt: the particle rests at the
+    // thickness; then velocityUpdate applies Newton's restitution law (it leaves with at least e times the
+    // incoming normal speed) and Coulomb's law for the impulses: the tangential velocity shrinks in its own
+    // direction by mu times the normal velocity change of the solve, and stops rather than reverses.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double s = G.scale(), dt = 1e-2, h = s * G.logUniform(1e-3, 1e-1);
+        const Collider c = plane(G.point(5.0 * s), G.unitVector(), G.uniform(0.0, 1.5), G.uniform(0.0, 1.0));
+        const Vec3 t = G.perpendicularTo(c.normal);
+        const Vec3 x = c.point + s * G.uniform(-3, 3) * G.perpendicularTo(c.normal) + (h + s * G.uniform(0.01, 0.5)) * c.normal;
+        const double vin = (s / dt) * G.uniform(1.0, 3.0);  // normal speed: x + dt v is below the surface
+        const Vec3 v0 = -vin * c.normal + vin * G.uniform(0.2, 3.0) * t;
+        const Vec3 p = x + dt * v0;
+        CollisionConstraint cc;
+        if (!generatePlaneConstraint(0, x, p, c, h, dt, &cc))
+            return testing::AssertionFailure() << "p = " << str(p) << " is below the plane through " << str(c.point) << " with normal "
+                                               << str(c.normal) << ": a constraint must be generated.";
+        const Vec3 pp = p + projectCollisionConstraint(p, 1.0, h, cc);
+        std::ostringstream in;
+        in << "plane through " << str(c.point) << " with normal " << str(c.normal) << ", mu = " << c.friction
+           << ", e = " << c.restitution << ", h = " << h << " m, x = " << str(x) << ", velocity " << str(v0) << " m/s, dt = " << dt << " s";
+        if (std::abs((pp - c.point).dot(c.normal) - h) > 1e-9 * s)
+            return testing::AssertionFailure() << "After the projection the particle must rest at the thickness h from the plane: it is "
+                                               << (pp - c.point).dot(c.normal) << " m from it; " << in.str() << ".";
+        Matrix3X v(3, 1);
+        v.col(0) = (pp - x) / dt;
+        const Vec3 vs = v.col(0);                     // after the solve
+        const double vnBefore = v0.dot(c.normal);     // incoming normal velocity (negative)
+        const double dvn = vs.dot(c.normal) - vnBefore;  // normal velocity change of the solve (>= 0)
+        const Vec3 vts = vs - vs.dot(c.normal) * c.normal;
+        velocityUpdate(v, {cc});
+        const Vec3 vf = v.col(0), vtf = vf - vf.dot(c.normal) * c.normal;
+        const double wantN = std::max(vs.dot(c.normal), -c.restitution * vnBefore);
+        if (!vf.allFinite() || std::abs(vf.dot(c.normal) - wantN) > 1e-9 * vin)
+            return testing::AssertionFailure() << "Restitution: the particle must leave the plane with the normal velocity max(v_n, "
+                                                  "e |v_n,before|) = " << wantN << " m/s (incoming " << vnBefore << " m/s); got "
+                                               << vf.dot(c.normal) << " m/s; " << in.str() << ".";
+        const double wantT = std::max(0.0, vts.norm() - c.friction * dvn);
+        if (std::abs(vtf.norm() - wantT) > 1e-9 * vin || (vtf - vtf.norm() * vts.normalized()).norm() > 1e-9 * vin)
+            return testing::AssertionFailure()
+                   << "Coulomb friction: the tangential velocity " << str(vts) << " m/s must shrink in its own direction by mu times "
+                      "the normal velocity change of the solve, " << c.friction << " x " << dvn << " m/s, to " << wantT
+                   << " m/s (never reversing, never sideways); got " << str(vtf) << " m/s (speed " << vtf.norm()
+                   << "). The normal velocity change is v_n after the solve minus v_n before, not the incoming speed; "
+                   << in.str() << ".";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Task6_4_CollisionSteps, InclineInAnyOrientationSlidesWithTheAnalyticAcceleration) {
+    // The incline of BlockOnAnInclineSlidesWithTheAnalyticAcceleration with everything (slope and gravity)
+    // rotated at random, a random slope angle, mu below tan(theta) and thickness: after 1 s the block has
+    // slid a t^2 / 2 with a = g (sin(theta) - mu cos(theta)), and stays at the thickness from the slope.
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const double theta = G.uniform(0.2, 0.9), mu = G.uniform(0.0, 0.8) * std::tan(theta), h = G.logUniform(1e-4, 1e-1);
+        const double dt = 1e-3, T = 0.5;
+        const Eigen::Matrix3d R = G.rotation();
+        const Vec3 n = R * Vec3(-std::sin(theta), std::cos(theta), 0), g = R * kG, origin = G.point(10.0);
+        const std::vector<Collider> cols = {plane(origin, n, mu)};
+        Particles P;
+        P.x = Matrix3X(3, 1);
+        P.x.col(0) = origin + h * n;
+        P.v = Matrix3X::Zero(3, 1);
+        P.w = VectorX::Ones(1);
+        const int steps = static_cast<int>(std::lround(T / dt));
+        for (int k = 0; k < steps; ++k) {  // the step above with gravity g instead of kG
+            P.v.col(0) += dt * (g - kG);
+            step(P, cols, h, dt, 4);
+        }
+        const double a = 9.81 * (std::sin(theta) - mu * std::cos(theta)), want = 0.5 * a * T * T;
+        const double dist = (P.x.col(0) - origin - h * n).norm();
+        if (!P.x.allFinite() || std::abs(dist - want) > 0.02 * want + 1e-3 * T * T ||
+            std::abs((P.x.col(0) - origin).dot(n) - h) > 1e-9 + 1e-9 * dist)
+            return testing::AssertionFailure() << "A block on an incline in any orientation (normal " << str(n) << ", gravity " << str(g)
+                                               << " m/s^2, slope " << theta << " rad, mu = " << mu << ", h = " << h
+                                               << " m) must slide a t^2/2 = " << want << " m in " << T << " s and stay at the "
+                                                  "thickness from the slope; it slid " << dist << " m and is "
+                                               << (P.x.col(0) - origin).dot(n) << " m from the slope.";
+        return testing::AssertionSuccess();
+    });
+}

@@ -32,3 +32,15 @@ clothlab_mistake(verlet_full_first_kick FILE hooke.cpp
   FIND "    v += 0.5 * dt * (f * w.asDiagonal());       // half kick\n    x += dt * v;                                // drift"
   REPLACE "    v += dt * (f * w.asDiagonal());\n    x += dt * v;"
   WHY "velocity Verlet with a full first kick")
+clothlab_mistake(hooke_absolute_epsilon FILE hooke.cpp
+  FIND "if (length < 1e-12) return Vec3::Zero();\n    return -k * (length - l0) * (d / length);"
+  REPLACE "if (length < 1e-6) return Vec3::Zero();\n    return -k * (length - l0) * (d / length);"
+  WHY "treats springs shorter than a micrometre as coincident (an absolute epsilon in metres): a short spring, e.g. in a millimetre-sized cloth, feels no force")
+clothlab_mistake(damping_absolute_epsilon FILE hooke.cpp
+  FIND "if (length < 1e-12) return Vec3::Zero();\n    const Vec3 dir = d / length;"
+  REPLACE "if (length < 1e-6) return Vec3::Zero();\n    const Vec3 dir = d / length;"
+  WHY "no damping for springs shorter than a micrometre (an absolute epsilon in metres)")
+clothlab_mistake(hooke_skips_small_stretch FILE hooke.cpp
+  FIND "if (length < 1e-12) return Vec3::Zero();\n    return -k * (length - l0) * (d / length);"
+  REPLACE "if (length < 1e-12 || std::abs(length - l0) < 1e-6) return Vec3::Zero();\n    return -k * (length - l0) * (d / length);"
+  WHY "ignores stretches below a micrometre: a stiff spring with a tiny stretch still pulls hard")

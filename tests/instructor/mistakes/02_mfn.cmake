@@ -34,3 +34,12 @@ clothlab_mistake(pinned_get_gravity FILE mfn.cpp
 clothlab_mistake(damping_sign FILE mfn.cpp
   FIND "f.col(i) += g / w[i] - c * v.col(i);" REPLACE "f.col(i) += g / w[i] + c * v.col(i);"
   WHY "damping that pushes instead of brakes")
+clothlab_mistake(gravity_fixed_axis FILE mfn.cpp
+  FIND "f.col(i) += g / w[i] - c * v.col(i);" REPLACE "f.col(i) += Vec3(0.0, -g.norm(), 0.0) / w[i] - c * v.col(i);"
+  WHY "gravity always along -y: a scene whose gravity points elsewhere (a tilted or rotated set-up) falls the wrong way")
+clothlab_mistake(skips_short_springs FILE mfn.cpp
+  FIND "for (const Spring& s : springs) {" REPLACE "for (const Spring& s : springs) {\n        if ((x.col(s.j) - x.col(s.i)).norm() < 1e-3) continue;"
+  WHY "skips springs shorter than 1 mm (an absolute epsilon): a small cloth feels no spring forces")
+clothlab_mistake(damping_only_structural FILE mfn.cpp
+  FIND "v.col(s.i), v.col(s.j), s.kd);" REPLACE "v.col(s.i), v.col(s.j), s.type == SpringType::Structural ? s.kd : 0.0);"
+  WHY "damps only the structural springs")

@@ -30,3 +30,11 @@ clothlab_mistake(velocity_after_position FILE pbd_loop.cpp
 clothlab_mistake(velocity_update_before_positions FILE pbd_loop.cpp
   FIND "    if (cb.velocityUpdate) cb.velocityUpdate(P.x, P.v);                   // (16)\n" REPLACE ""
   WHY "forgets velocityUpdate (line 16)")
+clothlab_mistake(inertia_absolute_tolerance FILE pbd_loop.cpp
+  FIND "const double tol = 1e-12 * std::max(1.0, eig.eigenvalues().cwiseAbs().maxCoeff());"
+  REPLACE "const double tol = 1e-6;"
+  WHY "an absolute threshold (1e-6 kg m^2) for a zero moment of inertia: a small or light cloth loses its spin")
+clothlab_mistake(inertia_relative_tolerance_large FILE pbd_loop.cpp
+  FIND "const double tol = 1e-12 * std::max(1.0, eig.eigenvalues().cwiseAbs().maxCoeff());"
+  REPLACE "const double tol = 1e-3 * eig.eigenvalues().cwiseAbs().maxCoeff();"
+  WHY "a nearly straight (but not straight) cloth is treated as a line: its spin about the line is damped")

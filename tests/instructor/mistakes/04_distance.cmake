@@ -24,3 +24,9 @@ clothlab_mistake(gradient_not_normalised FILE distance.cpp
 clothlab_mistake(rest_length_ignored FILE distance.cpp
   FIND "return (p1 - p2).norm() - d;" REPLACE "return (p1 - p2).norm();"
   WHY "C without the rest length")
+clothlab_mistake(gradient_absolute_epsilon FILE distance.cpp
+  FIND "if (len < 1e-12) return Vec3::Zero();" REPLACE "if (len < 1e-6) return Vec3::Zero();"
+  WHY "an absolute epsilon of a micrometre: nearly coincident points get no gradient")
+clothlab_mistake(projection_absolute_epsilon FILE distance.cpp
+  FIND "if (len < 1e-12 || wsum <= 0.0)" REPLACE "if (len < 1e-6 || wsum <= 0.0)"
+  WHY "an absolute epsilon of a micrometre: a nearly collapsed constraint is not pushed apart")

@@ -37,3 +37,10 @@ clothlab_mistake(stencil_wrong_opposite FILE bending.cpp
 clothlab_mistake(rest_angle_zero FILE bending.cpp
   FIND "s.phi0 = g.valid ? std::atan2(g.sinPhi, g.d) : M_PI;" REPLACE "s.phi0 = 0.0;"
   WHY "rest angle 0 instead of the initial shape's angle")
+clothlab_mistake(area_absolute_epsilon FILE bending.cpp
+  FIND "if (area1 < 1e-12 || area2 < 1e-12) return g;" REPLACE "if (area1 < 1e-6 || area2 < 1e-6) return g;"
+  WHY "an absolute area epsilon: small triangles (a millimetre-sized cloth) count as degenerate and never bend back")
+clothlab_mistake(denominator_unweighted_free FILE bending.cpp
+  FIND "w1 * g.q1.squaredNorm() + w2 * g.q2.squaredNorm() + w3 * g.q3.squaredNorm() + w4 * g.q4.squaredNorm();"
+  REPLACE "(w1 > 0) * g.q1.squaredNorm() + (w2 > 0) * g.q2.squaredNorm() + (w3 > 0) * g.q3.squaredNorm() + (w4 > 0) * g.q4.squaredNorm();"
+  WHY "sum |q_j|^2 over the free particles without their weights w_j: right only when every free particle has w = 1; with other masses one projection over- or undershoots the rest angle")

@@ -28,3 +28,12 @@ clothlab_mistake(restitution_ignored FILE collision.cpp
 clothlab_mistake(restitution_of_outgoing FILE collision.cpp
   FIND "const double vnNew = std::max(vn, -c.restitution * c.vnBefore);" REPLACE "const double vnNew = -c.restitution * vn;"
   WHY "reflects the normal velocity after the solve (about zero) instead of the incoming one")
+clothlab_mistake(plane_height_not_distance FILE collision.cpp
+  FIND "if ((p - collider.point).dot(collider.normal) >= h) return false;" REPLACE "if (p.y() - collider.point.y() >= h) return false;"
+  WHY "tests the height p.y instead of the distance along the normal: only right for a horizontal floor")
+clothlab_mistake(friction_from_incoming_speed FILE collision.cpp
+  FIND "const double dvn = std::max(0.0, vn - c.vnBefore);" REPLACE "const double dvn = std::max(0.0, -c.vnBefore);"
+  WHY "friction from the incoming normal speed instead of the normal velocity change of the solve: too much friction for a particle that lands within the step")
+clothlab_mistake(sphere_normal_at_start FILE collision.cpp
+  FIND "n = (f + t * u).normalized();" REPLACE "n = f.normalized();"
+  WHY "normal from the centre to the start x instead of to the entry point: right only for a path aimed at the centre; an oblique hit is pushed out on the wrong side")
