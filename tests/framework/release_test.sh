@@ -13,10 +13,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
 [[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
 # Exactly the committed files: nothing untracked, no build output.
-git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/' | sort >"$tmp/want.txt"
+{ git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/classroom.yml; } | sort >"$tmp/want.txt"
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
-  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/: $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the Classroom workflow: $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
 
 cd "$tmp/copy" || fail "cd"
 # The build is outside the copy, so the copy stays as released (the leak check reads it last).
@@ -49,6 +49,18 @@ done
 code=$?
 [[ $code -eq 1 && $(grep -c '^error: scenes/pbd_hanging.json: solver.bending_kernel: unknown value "batched" (allowed: exercise)$' "$tmp/run.log") -eq 1 ]] \
   || fail "bending_kernel batched in the copy: exit $code, $(tail -2 "$tmp/run.log")"
+# GitHub Classroom: the workflow's grading commands, run here as its job runs them (the Debian setup,
+# the grader, the base64 output the reporter reads), give the reporter's format with every test.
+wf=.github/workflows/classroom.yml
+awk '/id: clothlab/ { on = 1 } on && /run: \|/ { run = 1; next } run && /^ *- name:/ { exit } run { sub(/^ +/, ""); print }' "$wf" >"$tmp/step.sh"
+grep -q 'lab grade' "$tmp/step.sh" || fail "$wf: no grading step found"
+mkdir -p "$tmp/runner"; : >"$tmp/gh_output"
+RUNNER_TEMP=$tmp/runner GITHUB_OUTPUT=$tmp/gh_output bash -e "$tmp/step.sh" >"$tmp/step.log" 2>&1 || { tail "$tmp/step.log"; fail "the workflow's grading step fails"; }
+grep '^result=' "$tmp/gh_output" | cut -d= -f2- | base64 -d >"$tmp/classroom.json" || fail "the step's result is not base64"
+tests=$(grep -c '"name":' "$tmp/grade.json")  # one per graded test
+grep -q '"version":1' "$tmp/classroom.json" && grep -q '"status":"fail"' "$tmp/classroom.json" \
+  && [[ $(grep -o '"score":0' "$tmp/classroom.json" | wc -l) -eq $tests ]] \
+  || fail "the reporter's JSON lacks version/status or a score per test ($tests tests): $(head -c 300 "$tmp/classroom.json")"
 # Last, so that the checks above run even while a known leak waits to be removed.
 "$leak_check" "$root" "$tmp/copy" || fail "the copy gives away reference code (lines above)"
 echo "release copy builds, grades (0 points) and runs every scene up to 'not implemented'; no untracked file, no leak"

@@ -131,11 +131,12 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
         const std::string name = safeName(e.name);
         const fs::path dir = work / name;
         Row row;
+        std::string hash;
         try {
             bool duplicate = false;
             for (int k = 0; k < i; ++k) duplicate = duplicate || safeName(entries[k].name) == name;
             if (duplicate) throw std::runtime_error(e.path.filename().string() + ": (layout): a second submission named " + e.name);
-            const std::string hash = contentHash(e, salt);
+            hash = contentHash(e, salt);
             const fs::path cache = dir / "result.json";
             const json old = fs::exists(cache) ? json::parse(readFile(cache), nullptr, false) : json();
             if (old.is_object() && old.value("hash", "") == hash) {
@@ -162,12 +163,15 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
                     if (what.rfind(root.string(), 0) == 0) what = what.substr(root.string().size());
                     throw std::runtime_error(fs::relative(e.path, o.class_dir).string() + what);
                 }
-                writeFile(cache, json{{"hash", hash}, {"status", row.status}, {"results", resultsJson(row.stages)}}.dump(1));
             }
         } catch (const std::exception& err) {  // this student's layout: zero points, the reason in the gradebook
             row.status = std::string("error: ") + err.what();
             row.stages.clear();
             for (const auto& st : kit.stages) row.stages.push_back(ungradedStage(kit.points_dir, st.stage, "not graded", err.what()));
+        }
+        if (!row.cached && !hash.empty()) {  // the verdict, layout errors included, until the files change
+            fs::create_directories(dir);
+            writeFile(dir / "result.json", json{{"hash", hash}, {"status", row.status}, {"results", resultsJson(row.stages)}}.dump(1));
         }
         json fb = resultsJson(row.stages);
         fb["student"] = e.name;

@@ -54,6 +54,7 @@ std::string hex(uint64_t h) {
 
 json loadPoints(const fs::path& points_dir, const std::string& stage) {
     fs::path file;
+    if (!fs::is_directory(points_dir)) die(points_dir.string() + ": (folder): the points folder does not exist (--points-dir)");
     for (const auto& e : fs::directory_iterator(points_dir)) {
         const std::string name = e.path().filename().string();
         if (name.rfind(stage + "_", 0) == 0 && name.size() > 12 && name.substr(name.size() - 12) == ".points.json")
