@@ -13,4 +13,7 @@ void addRunCommand(CLI::App& app, int& exit_code);
 /// `study stability|precision SCENE [options]`
 void addStudyCommand(CLI::App& app, int& exit_code);
 
+/// `hint N.M [--exercises DIR] [--shown]`: progressive hints, recorded in DIR/NN_name/hints_taken.json
+void addHintCommand(CLI::App& app, int& exit_code);
+
 }  // namespace clothlab::cli

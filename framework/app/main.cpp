@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     int exit_code = clothlab::cli::Ok;
     clothlab::cli::addRunCommand(app, exit_code);
     clothlab::cli::addStudyCommand(app, exit_code);
+    clothlab::cli::addHintCommand(app, exit_code);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -118,5 +118,19 @@ for m in symplectic_euler pbd; do
 done
 if grep -q 'rms_strain \[1\]' <(head -1 "$tmp/pp/precision.csv"); then ok; else bad "precision.csv header: $(head -1 "$tmp/pp/precision.csv")"; fi
 
+# Hints: one level more per call, recorded in the stage folder; bad task numbers are one error line.
+mkdir -p "$tmp/ex/04_distance"
+printf '{"4.1": ["level-one text", "level-two text", "level-three text"]}' >"$tmp/ex/04_distance/hints.json"
+for level in 1 2 3 3; do
+  "$exe" hint 4.1 --exercises "$tmp/ex" >"$tmp/out" 2>&1 || bad "hint 4.1: exit $?"
+  grep -q "level $level of 3" "$tmp/out" && ! grep -q "level $((level + 1)) of 3" "$tmp/out" || bad "hint 4.1 call for level $level: $(cat "$tmp/out")"
+done
+grep -q '"4.1": 3' "$tmp/ex/04_distance/hints_taken.json" && ok || bad "hints_taken.json does not record 3 levels of 4.1"
+for t in 4.9 x 7.1; do
+  "$exe" hint "$t" --exercises "$tmp/ex" >"$tmp/out" 2>"$tmp/err"; code=$?
+  [[ $code -eq 1 && $(grep -c '^error: ' "$tmp/err") -eq 1 ]] && ok || bad "hint $t: exit $code, $(cat "$tmp/err")"
+done
+
 echo "cli checks: $pass ok, $fail failing"
 [[ $fail -eq 0 ]]
+
