@@ -16,6 +16,7 @@
 #include "clothlab/core/input_error.h"
 #include "clothlab/sim/run.h"
 #include "clothlab/core/not_implemented.h"
+#include "stub_advice.h"
 #include "clothlab/gui/app.h"
 #include "clothlab/io/report.h"
 #include "clothlab/io/scene_json.h"
@@ -271,7 +272,7 @@ int main(int argc, char** argv) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
     } catch (const NotImplemented& e) {
-        std::cerr << e.what() << "  (finish that task, or build with its reference: ./lab build --reference <stage>)\n";
+        std::cerr << e.what() << clothlab::cli::stubAdvice(e.what()) << "\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "error: internal: " << e.what() << "\n";

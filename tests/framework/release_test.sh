@@ -42,6 +42,8 @@ for s in scenes/*.json; do
   "$CLOTHLAB_BUILD/bin/clothlab" run "$s" --steps 5 >"$tmp/run.log" 2>&1
   code=$?
   [[ $code -eq 2 ]] && grep -q "not implemented: exercise" "$tmp/run.log" || fail "$s in the copy: exit $code, $(tail -2 "$tmp/run.log")"
+  # advice that works in a copy without solutions/: finish the task, grade, hint (not --reference)
+  grep -q "./lab hint [1-9]" "$tmp/run.log" && ! grep -q -- "--reference" "$tmp/run.log" || fail "$s in the copy: advice $(tail -1 "$tmp/run.log")"
 done
 # The instructors' batched bending kernel is not in the copy (nothing registers it at the solver's
 # extension point): asking for it is one clear input error that lists what there is.
