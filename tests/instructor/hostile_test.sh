@@ -17,9 +17,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 before=$(cd "$root" && { git status --porcelain 2>/dev/null; cat tests/*.points.json; } | cksum)
 mkdir -p "$tmp/class"
 cp -r "$root/solutions" "$tmp/class/reference"
-declare -A stage_of kind_of
+declare -A stage_of kind_of open_of
 n=0
-while IFS=$'\t' read -r name stage what; do
+while IFS=$'\t' read -r name stage what expect; do
   [[ $name == name || -z $name || ! $name =~ $only ]] && continue
   src="$hostile/$name"
   [[ $name == benign ]] && src="$hostile/benign"
@@ -31,6 +31,7 @@ while IFS=$'\t' read -r name stage what; do
   cp -r "$src/${dir%/}" "$tmp/class/$student/"
   stage_of[$student]=$stage
   kind_of[$student]=$([[ $what == benign:* ]] && echo benign || echo attack)
+  [[ ${expect:-} == known-open ]] && open_of[$student]=1
   n=$((n + 1))
 done <"$hostile/attacks.tsv"
 ((n > 0)) || fail "no attack matches '$only'"
@@ -55,7 +56,7 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
   # The reference row: each stage's points from the run that graded it.
   IFS=, read -r -a H0 <<<"$(head -1 "$book")"
   ref_row="reference"
-  for ((i = 1; i < ${#H0[@]} - 3; i++)); do
+  for ((i = 1; i <= ${#H0[@]} - 5; i++)); do
     p=0; while IFS=, read -r -a RR; do [[ ${RR[$i]} != 0 ]] && p=${RR[$i]}; done <"$tmp/reference_rows.csv"
     ref_row+=",$p"
     if printf '%s\n' "${stage_of[@]}" | grep -qx "${H0[$i]}"; then  # a graded stage: the reference keeps full points
@@ -64,15 +65,16 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
       [[ $p == "$want" ]] || fail "the reference scores $p of $want on stage ${H0[$i]}"
     fi
   done
-  echo "$ref_row,0,0,ok" >>"$book"
+  echo "$ref_row,0,0,ok," >>"$book"
 fi
 [[ -f $book ]] || fail "no gradebook"
-# Columns: student,01,...,06,total,max,status. The reference row gives each stage's maximum.
+# Columns: student,01,...,06,total,max,status,hints_taken. The reference row gives each stage's maximum.
 header=$(head -1 "$book")
 ref=$(grep '^reference,' "$book") || fail "no reference row"
 IFS=, read -r -a H <<<"$header"
 IFS=, read -r -a R <<<"$ref"
-[[ $mode == fast || ${R[-3]} == "${R[-2]}" ]] || fail "the reference scores ${R[-3]} of ${R[-2]}: $ref"
+nstages=$((${#H[@]} - 5))
+[[ $mode == fast || ${R[$((nstages + 1))]} == "${R[$((nstages + 2))]}" ]] || fail "the reference scores ${R[$((nstages + 1))]} of ${R[$((nstages + 2))]}: $ref"
 bad=0
 while IFS= read -r row; do
   IFS=, read -r -a C <<<"$row"
@@ -80,9 +82,14 @@ while IFS= read -r row; do
   [[ $student == student || $student == reference ]] && continue
   s=${stage_of[$student]:-}
   [[ -n $s ]] || { echo "unexpected row: $row"; bad=1; continue; }
-  status=$(echo "$row" | cut -d, -f$((${#H[@]}))-)
-  for ((i = 1; i < ${#H[@]} - 3; i++)); do
-    if [[ ${H[$i]} == "$s" ]]; then
+  status=$(echo "$row" | cut -d, -f$((nstages + 4)))
+  for ((i = 1; i <= nstages; i++)); do
+    if [[ ${H[$i]} == "$s" && -n ${open_of[$student]:-} ]]; then
+      # A known open hole (attacks.tsv: known-open; README "Not covered"): reported, and the day it
+      # scores 0 this test fails so that the mark is removed.
+      [[ ${C[$i]} != 0 ]] || { echo "$student: scores 0 now: the known hole is closed, remove 'known-open' in attacks.tsv and README"; bad=1; }
+      echo "KNOWN OPEN: $student still scores ${C[$i]} on stage $s (README: not covered)"
+    elif [[ ${H[$i]} == "$s" ]]; then
       [[ ${C[$i]} == 0 ]] || { echo "$student: ${C[$i]} points on the stage it attacks ($s), want 0"; bad=1; }
     elif [[ $mode == full ]]; then
       [[ ${C[$i]} == "${R[$i]}" ]] || { echo "$student: stage ${H[$i]} scores ${C[$i]}, want ${R[$i]} (an attack must not change other stages)"; bad=1; }

@@ -129,14 +129,16 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
     const std::string salt = kit.fingerprint + (o.grade.use_reference ? "ref" : "own");
     parallelFor(static_cast<int>(entries.size()), o.jobs, [&](int i) {
         const Entry& e = entries[i];
-        const std::string name = safeName(e.name);
+        // A name for files that no other entry shares: names that clash once made safe ("bob smith",
+        // "bob_smith") or appear twice (alice/, alice.zip) get a hash of their file name appended.
+        std::string name = safeName(e.name);
+        int same = 0;
+        for (const auto& other : entries) same += safeName(other.name) == name;
+        if (same > 1 || name != e.name) name += "-" + hex(fnv1a(e.path.filename().string())).substr(0, 8);
         const fs::path dir = work / name;
         Row row;
         std::string hash;
         try {
-            bool duplicate = false;
-            for (int k = 0; k < i; ++k) duplicate = duplicate || safeName(entries[k].name) == name;
-            if (duplicate) throw std::runtime_error(e.path.filename().string() + ": (layout): a second submission named " + e.name);
             hash = contentHash(e, salt);
             const fs::path cache = dir / "result.json";
             const json old = fs::exists(cache) ? json::parse(readFile(cache), nullptr, false) : json();

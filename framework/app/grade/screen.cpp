@@ -170,6 +170,12 @@ std::vector<Finding> screenSource(const std::string& text, const std::string& di
                 while (k < n && at(k) != q && at(k) != '\n') k += at(k) == '\\' ? 2 : 1;
                 i = k + 1;
             }
+            // A name glued to a literal is a user-defined-literal suffix ("x"_km, 1.0_m): none is needed here,
+            // and reading it as the prefix of a new literal would let the screen lose track of the code.
+            if (i < n && identStart(at(i))) {
+                report(line, "user-defined literals (a name right after a literal) are not allowed in a submission");
+                while (i < n && identChar(at(i))) ++i;
+            }
             prev2 = prev;
             prev = "literal";
             continue;
@@ -184,6 +190,10 @@ std::vector<Finding> screenSource(const std::string& text, const std::string& di
                 else if ((d == '+' || d == '-') && std::string("eEpP").find(at(k - 1)) != std::string::npos) ++k;
                 else break;
             }
+            std::string text;
+            for (size_t q2 = i; q2 < k; ++q2) text += at(q2);
+            if (text.find('_') != std::string::npos)
+                report(line, "user-defined literals (a name right after a literal) are not allowed in a submission");
             i = k;
             prev2 = prev;
             prev = "number";
@@ -282,6 +292,29 @@ bool allowedMath(const std::string& s) {
     return std::regex_match(s, math);
 }
 
+/// The names a demangled symbol may start with: from the start and after its return type
+/// ("std::ostream& std::ostream::_M_insert<double>(double)"), without "vtable for " and the like.
+std::vector<std::string> nameCandidates(const std::string& demangled) {
+    std::string s = demangled;
+    for (const char* pre : {"typeinfo for ", "typeinfo name for ", "vtable for ", "VTT for ", "construction vtable for "})
+        if (s.rfind(pre, 0) == 0) s = s.substr(std::string(pre).size());
+    std::vector<std::string> names = {s};
+    int depth = 0;
+    for (size_t i = 0; i < s.size() && s[i] != '('; ++i) {
+        if (s[i] == '<') ++depth;
+        else if (s[i] == '>') --depth;
+        else if (s[i] == ' ' && depth == 0) names.push_back(s.substr(i + 1));
+    }
+    return names;
+}
+
+bool inNamespace(const std::string& demangled, std::initializer_list<const char*> prefixes) {
+    for (const auto& name : nameCandidates(demangled))
+        for (const char* p : prefixes)
+            if (name.rfind(p, 0) == 0) return true;
+    return false;
+}
+
 bool allowedCpp(const std::string& d) {
     static const std::vector<std::string> prefixes = {
         "clothlab::", "operator new", "operator delete", "std::__throw_", "std::__cxx11::basic_string<char",
@@ -294,19 +327,7 @@ bool allowedCpp(const std::string& d) {
         "std::overflow_error", "std::underflow_error", "std::exception", "std::bad_alloc", "std::bad_array_new_length",
         "std::bad_function_call", "std::bad_cast", "std::bad_optional_access", "std::bad_variant_access",
         "std::terminate()", "__cxxabiv1::"};
-    std::string s = d;
-    for (const char* pre : {"typeinfo for ", "typeinfo name for ", "vtable for "})
-        if (s.rfind(pre, 0) == 0) s = s.substr(std::string(pre).size());
-    // A function template's name comes after its return type ("std::ostream& std::ostream::_M_insert<double>(double)"):
-    // try the name from the start and after every space outside <...> before the parameter list.
-    std::vector<std::string> names = {s};
-    int depth = 0;
-    for (size_t i = 0; i < s.size() && s[i] != '('; ++i) {
-        if (s[i] == '<') ++depth;
-        else if (s[i] == '>') --depth;
-        else if (s[i] == ' ' && depth == 0) names.push_back(s.substr(i + 1));
-    }
-    for (const auto& name : names)
+    for (const auto& name : nameCandidates(d))
         for (const auto& p : prefixes)
             if (name.rfind(p, 0) == 0) return true;
     return false;
@@ -343,9 +364,14 @@ std::vector<Finding> screenObject(const fs::path& object, const std::string& dis
             if (d.find("testing::") != std::string::npos) { report("defines `" + d + "`: a submission may not define GoogleTest symbols"); continue; }
             if (s.name.rfind("_Z", 0) != 0) { report("defines `" + d + "` with C linkage: write helpers as C++ functions, ideally `static` or in an anonymous namespace"); continue; }
             const bool weak = s.type == 'W' || s.type == 'V';
-            // A weak definition of a runtime symbol is a template or inline function the headers instantiate.
-            if (rules.linked.count(s.name) || (!weak && rules.runtime.count(s.name)))
-                report("defines `" + d + "`, which the framework, GoogleTest or the C/C++ library already defines (interposition): rename it or make it `static`");
+            // A weak definition is a template instance or an inline function of a header. One that the rest
+            // of the link also defines must be one the public headers or the standard library make (the
+            // stage code instantiates it too); anything else would replace the tests' own code (their
+            // vtables, typeinfo, helpers) or the library's.
+            const bool shared_instance = rules.header_instances.count(s.name) || inNamespace(d, {"std::", "Eigen::", "__gnu_cxx::"});
+            if (rules.linked.count(s.name) || (!weak && rules.runtime.count(s.name)) ||
+                (rules.linked_weak.count(s.name) && !(weak && shared_instance)))
+                report("defines `" + d + "`, which the framework, the graded tests, GoogleTest or the C/C++ library already define (it would replace theirs): rename it or make it `static`");
             continue;
         }
         if (s.type != 'U' && s.type != 'w' && s.type != 'v') continue;
@@ -362,6 +388,7 @@ std::vector<Finding> screenObject(const fs::path& object, const std::string& dis
         const std::string relocs = capture("readelf -r -W " + q(object) + " 2>/dev/null");
         std::istringstream in(relocs);
         std::string line, section;
+        bool iostream_init = false;
         static const std::set<std::string> init_ok = {"_ZNSt8ios_base4InitC1Ev", "_ZNSt8ios_base4InitD1Ev", "__cxa_atexit",
                                                       "__dso_handle", ".bss", "_ZStL8__ioinit"};
         while (std::getline(in, line)) {
@@ -379,7 +406,17 @@ std::vector<Finding> screenObject(const fs::path& object, const std::string& dis
                        "`): make namespace-scope constants constexpr, or move the object into the function that uses it");
                 break;
             }
+            if (name == "_ZNSt8ios_base4InitC1Ev") iostream_init = true;
         }
+        // The one initialiser allowed is <iostream>'s: a few instructions that call ios_base::Init. Anything
+        // else (even code that calls nothing) makes it larger or leaves out that call.
+        std::smatch m;
+        long size = -1;
+        if (std::regex_search(sections, m, std::regex("\\.text\\.startup\\s+PROGBITS\\s+[0-9a-f]+\\s+[0-9a-f]+\\s+([0-9a-f]+)")))
+            size = std::stol(m[1].str(), nullptr, 16);
+        if (found.empty() && (!iostream_init || size < 0 || size > 0x40))
+            report("runs code before the tests start (a namespace-scope object with a dynamic initialiser): make "
+                   "namespace-scope constants constexpr, or move the object into the function that uses it");
     }
     const std::string code = capture("objdump -d --no-show-raw-insn " + q(object) + " 2>/dev/null");
     if (std::regex_search(code, std::regex("\\s(syscall|sysenter|int\\s+\\$0x80)\\b")))

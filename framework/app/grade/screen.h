@@ -38,6 +38,8 @@ struct ObjectRules {
     std::set<std::string> own_api;        ///< mangled names the stage defines (from the stub's object)
     std::set<std::string> runtime;        ///< names the C/C++ runtime libraries define (libc, libm, libstdc++, libgcc_s)
     std::set<std::string> linked;         ///< names defined (not weakly) by the rest of the link: framework, GoogleTest, tests
+    std::set<std::string> linked_weak;    ///< names the rest of the link defines weakly (templates, inline functions, vtables)
+    std::set<std::string> header_instances;  ///< weak names the stage code (stubs, references) defines: public-header instances
     std::set<std::string> other_stages;   ///< mangled names of other stages' functions (better message)
 };
 

@@ -86,28 +86,38 @@ Kit loadKit(const fs::path& file) {
     for (const auto& e : fs::recursive_directory_iterator(k.include_dir)) fp += stamp(e.path());
     k.fingerprint = hex(fnv1a(fp));
     // Symbols: each stage's own functions; what the rest of the link and the runtime define.
-    for (auto& st : k.stages)
+    // nm -P --defined-only FILE: (name, type) of every global definition.
+    const auto definitions = [](const fs::path& f) {
+        std::vector<std::pair<std::string, char>> out;
+        std::istringstream in(run("nm -P --defined-only '" + f.string() + "' 2>/dev/null"));
+        std::string line, name, type;
+        while (std::getline(in, line)) {
+            std::istringstream l(line);
+            if ((l >> name >> type) && type.size() == 1) out.push_back({name, type[0]});
+        }
+        return out;
+    };
+    for (auto& st : k.stages) {
         for (const auto& o : st.stub)
-            for (const auto& s : definedSymbols(o))
-                if (s.rfind("_ZN8clothlab", 0) == 0) st.api.insert(s);
+            for (const auto& [name, type] : definitions(o)) {
+                if (type == 'T' && name.rfind("_ZN8clothlab", 0) == 0) st.api.insert(name);  // the stage's functions
+                if (type == 'W' || type == 'V') k.header_instances.insert(name);
+            }
+        for (const auto& o : st.reference)
+            for (const auto& [name, type] : definitions(o))
+                if (type == 'W' || type == 'V') k.header_instances.insert(name);
+    }
     std::vector<fs::path> linked = k.main_objects;
     linked.insert(linked.end(), k.libs.begin(), k.libs.end());
     for (const auto& st : k.stages) {
         linked.insert(linked.end(), st.tests.begin(), st.tests.end());
         linked.insert(linked.end(), st.reference.begin(), st.reference.end());
     }
-    for (const auto& f : linked) {
-        // Strong definitions only: weak ones (templates, inline functions) may be defined twice.
-        const std::string out = run("nm -P --defined-only '" + f.string() + "' 2>/dev/null");
-        std::istringstream in(out);
-        std::string name, type;
-        std::string line;
-        while (std::getline(in, line)) {
-            std::istringstream l(line);
-            if ((l >> name >> type) && type.size() == 1 && std::string("TDBRC").find(type[0]) != std::string::npos)
-                k.linked_symbols.insert(name);
+    for (const auto& f : linked)
+        for (const auto& [name, type] : definitions(f)) {
+            if (std::string("TDBRCiu").find(type) != std::string::npos) k.linked_symbols.insert(name);
+            else if (type == 'W' || type == 'V') k.linked_weak.insert(name);
         }
-    }
     for (const char* lib : {"libc.so.6", "libm.so.6", "libstdc++.so.6", "libgcc_s.so.1"}) {
         std::string path = run("'" + k.compiler + "' -print-file-name=" + lib);
         path.erase(path.find_last_not_of("\n ") + 1);
@@ -257,6 +267,8 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
             rules.own_api = st.api;
             rules.runtime = kit.runtime_symbols;
             rules.linked = kit.linked_symbols;
+            rules.linked_weak = kit.linked_weak;
+            rules.header_instances = kit.header_instances;
             for (const auto& other : kit.stages)
                 if (other.stage != st.stage) rules.other_stages.insert(other.api.begin(), other.api.end());
             for (const auto& o : c.objects)
@@ -453,9 +465,10 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         const std::string hash = hex(fnv1a(key));
         const fs::path bin = o.shared_cache.empty() ? o.work / "bin" : o.shared_cache / ("bin-" + st.stage + "-" + hash);
         const fs::path exe = bin / ("grade_" + st.stage);
-        const fs::path hash_file = bin / ("grade_" + st.stage + ".hash");
+        const fs::path hash_file = bin / ("grade_" + st.stage + ".key");
         std::lock_guard<std::mutex> lock(folderLock(bin));
-        if (!(fs::exists(exe) && fs::exists(hash_file) && readFile(hash_file) == hash)) {
+        // Reused only when the stored key is byte for byte this key (not on the hash alone).
+        if (!(fs::exists(exe) && fs::exists(hash_file) && readFile(hash_file, 512u << 20) == key)) {
             progress(o.progress, "linking stage " + st.stage);
             fs::remove(exe);
             makeWritableForSandbox(bin);
@@ -481,7 +494,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
                 results.push_back(ungradedStage(kit.points_dir, st.stage, "does not link", firstLines(log, 8, "")));
                 continue;
             }
-            writeFile(hash_file, hash);
+            writeFile(hash_file, key);
         }
         progress(o.progress, "grading stage " + st.stage + " ...");
         results.push_back(runStage(kit.points_dir, st.stage, exe, o.timeout_seconds, o.jobs, o.work / "logs"));

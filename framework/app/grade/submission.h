@@ -32,7 +32,9 @@ struct Kit {
     fs::path points_dir;
     std::vector<KitStage> stages;
     std::string fingerprint;  ///< changes when anything in the kit changes (cache key)
-    std::set<std::string> runtime_symbols, linked_symbols;
+    std::set<std::string> runtime_symbols, linked_symbols;  ///< defined by the C/C++ runtime; strongly by the link
+    std::set<std::string> linked_weak;       ///< defined weakly by the link (the tests' vtables, inline helpers, templates)
+    std::set<std::string> header_instances;  ///< weak definitions the stage code makes (public-header instances)
 };
 
 Kit loadKit(const fs::path& file);
