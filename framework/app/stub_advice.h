@@ -5,8 +5,8 @@
 
 namespace clothlab::cli {
 
-/// "not implemented: exercise 4.2 ..." -> advice that works in this copy: with solutions/ (the
-/// instructor's tree) building the stage's reference; in the student copy finishing the task.
+/// "not implemented: exercise 4.2 ..." -> advice that works in this copy: where the reference is
+/// (the instructor's tree) building the stage with it; in the student copy finishing the task.
 /// CLOTHLAB_REFERENCE_AVAILABLE is set by the build (framework/CMakeLists.txt).
 inline std::string stubAdvice(const std::string& what) {
     std::smatch m;
