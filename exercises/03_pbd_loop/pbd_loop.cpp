@@ -1,9 +1,10 @@
 // Stage 03 — the PBD loop.
 // Task sheet: exercises/03_pbd_loop/README.md
-// Formulas and argument units: framework/include/clothlab/exercise/03_pbd_loop.h
+// Contract (arguments, units, requirements): framework/include/clothlab/exercise/03_pbd_loop.h
 //
 // Replace each `throw NotImplemented(...)` by your code, then run
 //     ./lab grade --stage 03
+// Stuck? `./lab hint 3.1` (or 3.2, ...) reveals the next of three hints per call.
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -15,31 +16,21 @@ namespace clothlab {
 
 // ---- Task 3.1: dampVelocities ------------------------------------------------
 void dampVelocities(const Matrix3X& x, Matrix3X& v, const VectorX& w, double kDamping) {
-    // TODO 3.1: over the particles with w_i > 0 (m_i = 1/w_i) compute x_cm, v_cm, the angular
-    //           momentum L = sum r_i x (m_i v_i) and the inertia I = sum m_i (|r_i|^2 Id - r_i r_i^T),
-    //           omega = I^-1 L (pseudo-inverse when I is singular, e.g. Eigen::SelfAdjointEigenSolver),
-    //           then v_i += kDamping (v_cm + omega x r_i - v_i). Pinned particles keep their velocity.
+    // TODO 3.1: dampVelocities, damping that spares rigid motion (task sheet 3.1; contract in the header)
     (void)x; (void)v; (void)w; (void)kDamping;
     throw NotImplemented("exercise 3.1 dampVelocities");
 }
 
 // ---- Task 3.2: stiffness per iteration ---------------------------------------
 double iterationStiffness(double k, int iterations) {
-    // TODO 3.2: k' = 1 - (1 - k)^(1/n); n = 0 returns k.
+    // TODO 3.2: stiffness per solver iteration (task sheet 3.2; contract in the header)
     (void)k; (void)iterations;
     throw NotImplemented("exercise 3.2 iterationStiffness");
 }
 
 // ---- Task 3.3: one PBD step, lines (5)-(16) ----------------------------------
 void pbdStep(PbdParticles& P, const PbdCallbacks& cb, double kDamping, int iterations, double dt) {
-    // TODO 3.3: write lines (5)-(16) of the slides in this order, one or two lines each:
-    //   (5)  f = 0 (3 x N), cb.externalForces(x, v, f) if set, v_i += dt w_i f_i
-    //   (6)  dampVelocities(x, v, w, kDamping)
-    //   (7)  p = x + dt v
-    //   (8)  cb.generateCollisionConstraints(x, p) if set
-    //   (9)-(11) `iterations` times: cb.projectConstraints(p) if set
-    //   (13) v = (p - x) / dt   (14) x = p
-    //   (16) cb.velocityUpdate(x, v) if set
+    // TODO 3.3: one PBD step, slide lines (5) to (16) (task sheet 3.3; contract in the header)
     (void)P; (void)cb; (void)kDamping; (void)iterations; (void)dt;
     throw NotImplemented("exercise 3.3 pbdStep");
 }

@@ -1,9 +1,10 @@
 // Stage 04 — the distance constraint.
 // Task sheet: exercises/04_distance/README.md
-// Formulas and argument units: framework/include/clothlab/exercise/04_distance.h
+// Contract (arguments, units, requirements): framework/include/clothlab/exercise/04_distance.h
 //
 // Replace each `throw NotImplemented(...)` by your code, then run
 //     ./lab grade --stage 04
+// Stuck? `./lab hint 4.1` (or 4.2, ...) reveals the next of three hints per call.
 #include <cmath>
 
 #include "clothlab/core/not_implemented.h"
@@ -13,14 +14,14 @@ namespace clothlab {
 
 // ---- Task 4.1: the cost function ----------------------------------------------
 double distanceConstraint(const Vec3& p1, const Vec3& p2, double d) {
-    // TODO 4.1: C = |p1 - p2| - d.
+    // TODO 4.1: the cost function of the distance constraint (task sheet 4.1; contract in the header)
     (void)p1; (void)p2; (void)d;
     throw NotImplemented("exercise 4.1 distanceConstraint");
 }
 
 // ---- Task 4.2: its gradient -----------------------------------------------------
 Vec3 distanceGradient(const Vec3& p1, const Vec3& p2) {
-    // TODO 4.2: n = (p1 - p2) / |p1 - p2|; Vec3::Zero() when |p1 - p2| < 1e-12.
+    // TODO 4.2: the gradient of the distance constraint (task sheet 4.2; contract in the header)
     (void)p1; (void)p2;
     throw NotImplemented("exercise 4.2 distanceGradient");
 }
@@ -28,8 +29,7 @@ Vec3 distanceGradient(const Vec3& p1, const Vec3& p2) {
 // ---- Task 4.3: the projection ----------------------------------------------------
 DistanceCorrection projectDistanceConstraint(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
                                              double k) {
-    // TODO 4.3: dp1 = -w1/(w1+w2) C n k,  dp2 = +w2/(w1+w2) C n k  with C and n as in 4.1 and 4.2.
-    //           Zero corrections when w1 + w2 = 0 or the points coincide (never NaN).
+    // TODO 4.3: the projection of the distance constraint (task sheet 4.3; contract in the header)
     (void)p1; (void)p2; (void)w1; (void)w2; (void)d; (void)k;
     throw NotImplemented("exercise 4.3 projectDistanceConstraint");
 }

@@ -1,9 +1,10 @@
 // Stage 06 — collision constraints and velocityUpdate.
 // Task sheet: exercises/06_collision/README.md
-// Formulas and argument units: framework/include/clothlab/exercise/06_collision.h
+// Contract (arguments, units, requirements): framework/include/clothlab/exercise/06_collision.h
 //
 // Replace each `throw NotImplemented(...)` by your code, then run
 //     ./lab grade --stage 06
+// Stuck? `./lab hint 6.1` (or 6.2, ...) reveals the next of three hints per call.
 #include <algorithm>
 #include <cmath>
 
@@ -15,8 +16,7 @@ namespace clothlab {
 // ---- Task 6.1: plane -----------------------------------------------------------------
 bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
                              CollisionConstraint* out) {
-    // TODO 6.1: if (p - q_s).n_s < h, fill *out (i, q = collider.point, n = collider.normal, start = x,
-    //           vnBefore = (p - x).n / dt, friction, restitution) and return true; else return false.
+    // TODO 6.1: collision constraint against a plane (task sheet 6.1; contract in the header)
     (void)i; (void)x; (void)p; (void)collider; (void)h; (void)dt; (void)out;
     throw NotImplemented("exercise 6.1 generatePlaneConstraint");
 }
@@ -24,25 +24,21 @@ bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider
 // ---- Task 6.2: sphere, along the path x -> p --------------------------------------------
 bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
                               CollisionConstraint* out) {
-    // TODO 6.2: with Rh = R + h: x outside -> first intersection of the segment x -> p with the sphere
-    //           of radius Rh (a quadratic in t); x inside -> only if p is inside, normal from the centre
-    //           to p. Then q = c + R n and the other fields as in 6.1.
+    // TODO 6.2: collision constraint against a sphere, along the path (task sheet 6.2; contract in the header)
     (void)i; (void)x; (void)p; (void)collider; (void)h; (void)dt; (void)out;
     throw NotImplemented("exercise 6.2 generateSphereConstraint");
 }
 
 // ---- Task 6.3: projection with static friction ----------------------------------------------
 Vec3 projectCollisionConstraint(const Vec3& p, double w, double h, const CollisionConstraint& c) {
-    // TODO 6.3: C = (p - q).n - h; if C >= 0 or w == 0 return zero; dp = -C n; then static friction:
-    //           t = tangential part of (p + dp - c.start); if |t| < mu |C|, dp -= t.
+    // TODO 6.3: projection with static friction (task sheet 6.3; contract in the header)
     (void)p; (void)w; (void)h; (void)c;
     throw NotImplemented("exercise 6.3 projectCollisionConstraint");
 }
 
 // ---- Task 6.4: velocityUpdate -------------------------------------------------------------
 void velocityUpdate(Matrix3X& v, const std::vector<CollisionConstraint>& contacts) {
-    // TODO 6.4: for every contact: v_n = v.n, v_t = v - v_n n, dvn = max(0, v_n - vnBefore);
-    //           shorten v_t by min(|v_t|, mu dvn); v_n' = max(v_n, -e vnBefore); v = v_t + v_n' n.
+    // TODO 6.4: velocityUpdate, restitution and kinetic friction (task sheet 6.4; contract in the header)
     (void)v; (void)contacts;
     throw NotImplemented("exercise 6.4 velocityUpdate");
 }

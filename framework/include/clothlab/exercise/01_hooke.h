@@ -14,8 +14,13 @@ namespace clothlab {
 
 /// Exercise 1.1 — Hooke's law (Gesetz von Hooke): the spring force acting on p1.
 ///
-/// \f[ \vec F_s = -k\,(\|\vec p_1-\vec p_0\| - l_0)\,\frac{\vec p_1-\vec p_0}{\|\vec p_1-\vec p_0\|} \f]
-/// The force on p0 is the opposite, −F_s (Newton's third law).
+/// Requirements (the task sheet has the slide's formula, the graded tests check each one):
+/// - the force is minus the gradient of the spring energy with respect to p1,
+///   \f$ \vec F_s = -\nabla_{\vec p_1} E \f$ with \f$ E = \tfrac{k}{2}\,(\|\vec p_1-\vec p_0\| - l_0)^2 \f$;
+/// - it acts along the spring, pulls p1 back towards p0 when the spring is stretched, pushes it
+///   away when compressed, and vanishes at the rest length (Ruhelänge);
+/// - its magnitude is linear in the deformation \f$ \Delta l = \|\vec p_1-\vec p_0\| - l_0 \f$;
+/// - the force on p0 is the opposite (Newton's third law).
 /// If p0 and p1 coincide the direction is undefined: return the zero vector (never NaN).
 /// @param p0  first end point, m
 /// @param p1  second end point, m
@@ -26,8 +31,14 @@ Vec3 hookeForce(const Vec3& p0, const Vec3& p1, double k, double l0);
 
 /// Exercise 1.2 — damping along the spring: the damping force acting on p1.
 ///
-/// \f[ \vec F_d = -k_d\,\big((\vec v_1-\vec v_0)\cdot\hat d\big)\,\hat d,\qquad \hat d = \frac{\vec p_1-\vec p_0}{\|\vec p_1-\vec p_0\|} \f]
-/// Only the relative velocity along the spring is damped. Coincident points: zero vector.
+/// Requirements:
+/// - it depends only on the relative velocity v1 − v0 (a common motion of both ends is not damped);
+/// - only the component of that relative velocity along the spring is damped: motion across the
+///   spring (a rotation) gets no force, and the force itself points along the spring;
+/// - it opposes that component and is linear in it, with coefficient kd (a relative speed of 1 m/s
+///   along the spring gives kd newtons);
+/// - so it never adds energy: the power it does on the pair is ≤ 0.
+/// Coincident points: zero vector (never NaN).
 /// @param p0, p1  end points, m
 /// @param v0, v1  their velocities, m/s
 /// @param kd      damping coefficient, N s/m, kd ≥ 0
@@ -38,10 +49,13 @@ Vec3 springDampingForce(const Vec3& p0, const Vec3& p1, const Vec3& v0, const Ve
 /// Arguments: x (3 x N, m), v (3 x N, m/s), f (3 x N, N; overwritten).
 using ForceField = std::function<void(const Matrix3X& x, const Matrix3X& v, Matrix3X& f)>;
 
-/// Exercise 1.3 — explicit (forward) Euler step.
+/// Exercise 1.3 — one step of the explicit (forward) Euler method for
+/// \f$ \dot x = v,\ \dot v = a = w\,F(x, v) \f$.
 ///
-/// \f[ \vec a_i = w_i\,\vec F_i(x^n, v^n),\quad x_i^{n+1} = x_i^n + \Delta t\,v_i^n,\quad v_i^{n+1} = v_i^n + \Delta t\,\vec a_i \f]
-/// Both updates use the old state. Particles with w_i = 0 (pinned) get no acceleration.
+/// Requirements: every derivative is taken at the old state \f$ (x^n, v^n) \f$, so the force is
+/// evaluated once per step; the acceleration of particle i is \f$ w_i \vec F_i \f$, so a pinned
+/// particle (w_i = 0) keeps its velocity (and, at rest, its position); first order in Δt (halving
+/// Δt halves the error). On an undamped oscillator the energy grows every step.
 /// @param x      positions, 3 x N, m (updated in place)
 /// @param v      velocities, 3 x N, m/s (updated in place)
 /// @param w      inverse masses, N, 1/kg
@@ -49,20 +63,25 @@ using ForceField = std::function<void(const Matrix3X& x, const Matrix3X& v, Matr
 /// @param dt     time step Δt, s
 void explicitEulerStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt);
 
-/// Exercise 1.4 — symplectic (semi-implicit) Euler step.
+/// Exercise 1.4 — one step of the symplectic (semi-implicit) Euler method.
 ///
-/// \f[ v_i^{n+1} = v_i^n + \Delta t\,w_i\,\vec F_i(x^n, v^n),\qquad x_i^{n+1} = x_i^n + \Delta t\,v_i^{n+1} \f]
-/// The position update uses the *new* velocity.
+/// Requirements: the velocity is advanced first, with the force at the old state \f$ (x^n, v^n) \f$
+/// (one force evaluation per step); the position is then advanced with the velocity *just computed*.
+/// First order in Δt, but the energy of an undamped oscillator stays bounded (no drift), and
+/// momentum and angular momentum of internal forces are kept. Pinned particles as in explicitEulerStep().
 /// @param x, v, w, force, dt  as in explicitEulerStep()
 void symplecticEulerStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt);
 
-/// Exercise 1.5 — velocity Verlet step (second order).
+/// Exercise 1.5 — one step of velocity Verlet (second order).
 ///
-/// \f[ v^{n+1/2} = v^n + \tfrac{\Delta t}{2}\,w\,F(x^n, v^n),\quad
-///     x^{n+1} = x^n + \Delta t\,v^{n+1/2},\quad
-///     v^{n+1} = v^{n+1/2} + \tfrac{\Delta t}{2}\,w\,F(x^{n+1}, v^{n+1/2}) \f]
-/// Second order when F depends on the positions only; with velocity-dependent forces (damping)
-/// the last kick uses \f$ v^{n+1/2} \f$ instead of \f$ v^{n+1} \f$ and the step is first order.
+/// Requirements, for forces that depend on the positions only (\f$ a^n = w\,F(x^n) \f$):
+/// \f[ x^{n+1} = x^n + \Delta t\,v^n + \tfrac{\Delta t^2}{2}\,a^n,\qquad
+///     v^{n+1} = v^n + \tfrac{\Delta t}{2}\,\big(a^n + a^{n+1}\big) \f]
+/// (Taylor to second order for x, the trapezoidal rule for v). Write it so that the force is evaluated
+/// exactly twice per step, at the old positions and at the new ones. Convention for velocity-dependent
+/// forces (damping): the second evaluation receives the velocity after the first half of the velocity
+/// change, \f$ v^n + \tfrac{\Delta t}{2}\,a^n \f$ (the method is then first order).
+/// Second order (halving Δt quarters the error), energy bounded; pinned particles as in explicitEulerStep().
 /// @param x, v, w, force, dt  as in explicitEulerStep()
 void velocityVerletStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt);
 

@@ -38,10 +38,12 @@ std::vector<Spring> makeClothSprings(const Matrix3X& x, int nx, int ny, const Cl
 
 /// Exercise 2.2 — add the forces of all springs (Federkräfte) to f.
 ///
-/// For each spring s = (i, j, k, l0, kd), with stage 01's functions:
-/// \f[ \vec F = \mathrm{hookeForce}(\vec x_i, \vec x_j, k, l_0) + \mathrm{springDampingForce}(\vec x_i, \vec x_j, \vec v_i, \vec v_j, k_d),
-///     \qquad \vec f_j \mathrel{+}= \vec F,\quad \vec f_i \mathrel{-}= \vec F \f]
-/// (actio = reactio, so the spring forces of the whole cloth sum to zero).
+/// Each spring s = (i, j, k, l0, kd) is a Hooke spring with damping along it, as in stage 01:
+/// use hookeForce() and springDampingForce() with x_i, v_i as their first and x_j, v_j as their
+/// second end point. Requirements: each particle receives the force its springs exert on *it*
+/// (mind which end stage 01's functions return the force for); actio = reactio, so the spring forces
+/// of the whole cloth sum to zero; the total is minus the gradient of the sum of the spring energies;
+/// coincident particles give no NaN.
 /// @param springs  the springs, e.g. from makeClothSprings()
 /// @param x        positions, 3 x N, m
 /// @param v        velocities, 3 x N, m/s
@@ -50,9 +52,11 @@ void addClothSpringForces(const std::vector<Spring>& springs, const Matrix3X& x,
 
 /// Exercise 2.3 — add gravity (Schwerkraft) and air damping (Dämpfung) to f.
 ///
-/// \f[ \vec f_i \mathrel{+}= m_i\,\vec g - c\,\vec v_i,\qquad m_i = 1/w_i \f]
+/// Every free particle i gets its weight (its mass \f$ m_i = 1/w_i \f$ in the field g) and an air
+/// drag that opposes its velocity, linear in \f$ \vec v_i \f$ with coefficient c (1 m/s gives c newtons).
 /// Pinned particles (w_i = 0, infinite mass) get neither: their force stays as it is (never Inf or NaN).
-/// Over a cloth without pins the gravity forces sum to \f$ m_{gesamt}\,\vec g \f$.
+/// Over a cloth without pins the gravity forces sum to \f$ m_{gesamt}\,\vec g \f$, in whatever
+/// direction g points.
 /// @param w  inverse masses, N, 1/kg
 /// @param v  velocities, 3 x N, m/s
 /// @param g  gravitational acceleration, m/s² (e.g. (0, −9.81, 0))

@@ -45,45 +45,43 @@ struct PbdCallbacks {
 /// Exercise 3.1 — dampVelocities (paper, section 3.5): damp only the motion that deviates from
 /// the rigid motion of the whole body, so a rigidly moving or spinning cloth is not slowed down.
 ///
-/// Over the particles with w_i > 0 (m_i = 1/w_i):
-/// \f[ \vec x_{cm} = \frac{\sum_i m_i \vec x_i}{\sum_i m_i},\quad
-///     \vec v_{cm} = \frac{\sum_i m_i \vec v_i}{\sum_i m_i},\quad
-///     \vec L = \sum_i \vec r_i \times (m_i \vec v_i),\ \vec r_i = \vec x_i - \vec x_{cm},\quad
-///     I = \sum_i m_i\,\tilde r_i \tilde r_i^T \f]
-/// \f[ \vec\omega = I^{-1}\vec L,\qquad
-///     \Delta\vec v_i = \vec v_{cm} + \vec\omega\times\vec r_i - \vec v_i,\qquad
-///     \vec v_i \leftarrow \vec v_i + k_{damping}\,\Delta\vec v_i \f]
-/// (\f$\tilde r\f$ is the cross-product matrix, \f$\tilde r\,\vec a = \vec r\times\vec a\f$.)
-/// If I is singular (all particles on one line, or one particle) use its pseudo-inverse, i.e. no
-/// rotation about the line. Pinned particles (w_i = 0) keep their velocity. k_damping = 0: no change.
+/// The body is the set of free particles (w_i > 0, m_i = 1/w_i). Its rigid motion is the velocity
+/// field \f$ \vec v_{cm} + \vec\omega\times(\vec x_i - \vec x_{cm}) \f$ with the same linear and
+/// angular momentum (about the centre of mass) as the particles. Requirements:
+/// - a velocity field that already is a rigid motion (translation plus spin) is unchanged;
+/// - linear and angular momentum of the free particles are unchanged for every k_damping;
+/// - each particle's deviation from the rigid motion shrinks by exactly the factor 1 − k_damping;
+/// - where the momenta do not fix ω (the inertia is singular: all free particles on one line, or a
+///   single one), take the ω without a component about the axes of zero inertia (no spin about the line);
+/// - pinned particles (w_i = 0) keep their velocity; k_damping = 0 changes nothing; never NaN.
 /// @param x         positions, 3 x N, m
 /// @param v         velocities, 3 x N, m/s (changed in place)
 /// @param w         inverse masses, N, 1/kg
 /// @param kDamping  damping coefficient k_damping in [0, 1] (1: only rigid motion survives)
 void dampVelocities(const Matrix3X& x, Matrix3X& v, const VectorX& w, double kDamping);
 
-/// Exercise 3.2 — the stiffness a constraint applies in each of n solver iterations.
+/// Exercise 3.2 — the stiffness k' a constraint applies in each of n solver iterations.
 ///
-/// Projecting a constraint with stiffness k' in each of n iterations leaves the error
-/// \f$(1-k')^n\f$ of the original one; to make that equal to \f$1-k\f$ (the error k leaves in one
-/// projection) independent of n:
-/// \f[ k' = 1 - (1 - k)^{1/n} \f]
+/// One projection with stiffness k removes the fraction k of a constraint's error (for a linear
+/// constraint), leaving 1 − k. Requirement: n projections with k' each leave the same error as one
+/// projection with k, for every n ≥ 1, so that the result does not depend on the iteration count.
 /// n = 0 (no iterations): return k. k = 1 stays 1; k = 0 stays 0.
 /// @param k           stiffness in [0, 1]
 /// @param iterations  number of solver iterations n ≥ 0
 /// @return            per-iteration stiffness k' in [0, 1]
 double iterationStiffness(double k, int iterations);
 
-/// Exercise 3.3 — one PBD time step, lines (5)–(16) of the slides:
-/// \f[ (5)\ \vec v_i \leftarrow \vec v_i + \Delta t\,w_i\,\vec f_{ext}(\vec x_i) \qquad
-///     (6)\ \mathrm{dampVelocities}(\vec v_1..\vec v_N) \qquad
-///     (7)\ \vec p_i \leftarrow \vec x_i + \Delta t\,\vec v_i \f]
-/// \f[ (8)\ \mathrm{generateCollisionConstraints}(\vec x_i\to\vec p_i) \qquad
-///     (9\text{–}11)\ \text{solverIterations times: projectConstraints}(\vec p) \f]
-/// \f[ (13)\ \vec v_i \leftarrow (\vec p_i - \vec x_i)/\Delta t \qquad
-///     (14)\ \vec x_i \leftarrow \vec p_i \qquad
-///     (16)\ \mathrm{velocityUpdate}(\vec v_1..\vec v_N) \f]
-/// Empty callbacks are skipped (no forces, no collisions, no constraints, no velocity update).
+/// Exercise 3.3 — one PBD time step: lines (5)–(16) of the slides' algorithm (reproduced on the
+/// task sheet), in the slides' order.
+///
+/// Where the callbacks come in: line (5) asks externalForces for f_ext (f is 3 x N and zero on entry);
+/// line (6) is your dampVelocities() with kDamping; line (8) passes the positions and the predictions
+/// to generateCollisionConstraints; lines (9)–(11) call projectConstraints `iterations` times; line (16)
+/// passes the new positions and velocities to velocityUpdate. Empty callbacks are skipped (no forces,
+/// no collisions, no constraints, no velocity update).
+/// Requirements: without constraints a particle falls as with symplectic Euler (error g t Δt/2 against
+/// the parabola); a pinned particle (w = 0) never moves; zero iterations give the plain prediction;
+/// the damping acts before the prediction; afterwards P.p holds the (projected) prediction.
 /// @param P           particles (x, v changed; p holds the prediction afterwards)
 /// @param callbacks   forces, collision generation, constraint sweep, velocity update
 /// @param kDamping    coefficient of dampVelocities in [0, 1]

@@ -15,28 +15,34 @@ struct DistanceCorrection {
     Vec3 dp2;  ///< Δp2, m: add to p2
 };
 
-/// Exercise 4.1 — the cost function of the distance constraint (models a spring):
+/// Exercise 4.1 — the cost function of the distance constraint (models a spring), as on the slides:
 /// \f[ C(\vec p_1, \vec p_2) = |\vec p_1 - \vec p_2| - d \f]
+/// Zero at the rest distance, positive when stretched, negative when compressed.
 /// @param p1, p2  end points, m
 /// @param d       rest length, m, d ≥ 0
 /// @return        C, m (positive: stretched, negative: compressed)
 double distanceConstraint(const Vec3& p1, const Vec3& p2, double d);
 
-/// Exercise 4.2 — the gradient of C with respect to p1:
-/// \f[ \nabla_{\vec p_1} C = \frac{\vec p_1 - \vec p_2}{|\vec p_1 - \vec p_2|} = \vec n,
-///     \qquad \nabla_{\vec p_2} C = -\vec n \f]
-/// Coincident points (|p1 − p2| < 1e-12 m): the direction is undefined, return the zero vector.
+/// Exercise 4.2 — the gradient of C with respect to p1, \f$ \nabla_{\vec p_1} C \f$.
+///
+/// Requirements: it agrees with central finite differences of distanceConstraint() in p1; because C
+/// depends only on the difference p1 − p2, \f$ \nabla_{\vec p_2} C = -\nabla_{\vec p_1} C \f$ (you return
+/// the first one only). Coincident points (|p1 − p2| < 1e-12 m): the direction is undefined, return
+/// the zero vector (never NaN).
 /// @param p1, p2  end points, m
-/// @return        unit vector n (dimensionless), or zero for coincident points
+/// @return        \f$ \nabla_{\vec p_1} C \f$ (dimensionless), or zero for coincident points
 Vec3 distanceGradient(const Vec3& p1, const Vec3& p2);
 
-/// Exercise 4.3 — projection of the distance constraint (slides, mass-weighted):
-/// \f[ \Delta\vec p_1 = -\frac{w_1}{w_1 + w_2}\,(|\vec p_1 - \vec p_2| - d)\,
-///        \frac{\vec p_1 - \vec p_2}{|\vec p_1 - \vec p_2|}\,k,\qquad
-///     \Delta\vec p_2 = +\frac{w_2}{w_1 + w_2}\,(|\vec p_1 - \vec p_2| - d)\,
-///        \frac{\vec p_1 - \vec p_2}{|\vec p_1 - \vec p_2|}\,k \f]
-/// With k = 1 one projection satisfies the constraint exactly; Σ m_i Δp_i = 0 (no momentum is
-/// created). Both pinned (w1 + w2 = 0) or coincident points: zero corrections, never NaN.
+/// Exercise 4.3 — projection of the distance constraint (Projektion des Constraint) with stiffness k.
+///
+/// Requirements (derive the corrections from them; the task sheet outlines how):
+/// - both corrections lie along the constraint's gradient (the line through p1 and p2);
+/// - with k = 1 one projection satisfies the constraint exactly: C(p1 + Δp1, p2 + Δp2) = 0;
+///   with stiffness k it removes the fraction k of C, i.e. C afterwards is (1 − k)·C;
+/// - no momentum is created: \f$ m_1\Delta\vec p_1 + m_2\Delta\vec p_2 = 0 \f$ with m_i = 1/w_i,
+///   so a pinned end (w = 0) does not move and the other one moves the whole way;
+/// - a satisfied constraint (C = 0) moves nothing.
+/// Both pinned (w1 + w2 = 0) or coincident points: zero corrections, never NaN.
 /// @param p1, p2  end points, m
 /// @param w1, w2  inverse masses, 1/kg (0: pinned)
 /// @param d       rest length, m

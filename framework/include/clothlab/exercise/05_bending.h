@@ -57,34 +57,36 @@ struct BendingStencil {
 };
 
 /// Exercise 5.1 — d = n1·n2, \f$\sin\varphi = |\vec n_1\times\vec n_2|\f$ (not \f$\sqrt{1-d^2}\f$:
-/// see the top of this file) and the q-vectors q_i = ∂d/∂p_i (appendix A), with p_i relative to p1:
-/// \f[ \vec q_3 = \frac{\vec n_2\times\vec p_2 + (\vec p_2\times\vec n_1)\,d}{|\vec p_2\times\vec p_3|},\qquad
-///     \vec q_4 = \frac{\vec n_1\times\vec p_2 + (\vec p_2\times\vec n_2)\,d}{|\vec p_2\times\vec p_4|} \f]
-/// \f[ \vec q_2 = \frac{\vec p_3\times\vec n_2 + (\vec n_1\times\vec p_3)\,d}{|\vec p_2\times\vec p_3|}
-///               +\frac{\vec p_4\times\vec n_1 + (\vec n_2\times\vec p_4)\,d}{|\vec p_2\times\vec p_4|},\qquad
-///     \vec q_1 = -\vec q_2 - \vec q_3 - \vec q_4 \f]
-/// These are the negatives of the q-vectors printed on the slides and in the paper: the printed
-/// ones are −∂d/∂p_i (checked against finite differences; see the task sheet).
-/// Zero-area triangles (|p2 × p3| or |p2 × p4| below 1e-12 m²) and coincident points: valid = false,
-/// d = −1, sinPhi = 0 and all q zero (never NaN). d is clamped to [−1, 1].
+/// see the top of this file) and the q-vectors \f$ \vec q_i = \partial d/\partial\vec p_i \f$ (appendix A).
+///
+/// Requirements: every component of every q_i agrees with central finite differences of d; since d
+/// does not change when the whole stencil is translated, \f$ \vec q_1+\vec q_2+\vec q_3+\vec q_4 = 0 \f$;
+/// the q_i rotate with the stencil and scale as 1/length. The q-vectors printed on the slides and in the
+/// paper are the negatives of these, \f$ -\partial d/\partial\vec p_i \f$ (the task sheet shows them and
+/// how the sign was found): do not copy them unchanged.
+/// Zero-area triangles (|p2 × p3| or |p2 × p4| below 1e-12 m², positions relative to p1) and coincident
+/// points: valid = false, d = −1, sinPhi = 0 and all q zero (never NaN). d is clamped to [−1, 1].
 /// @param p1, p2  the shared edge, m
 /// @param p3, p4  the opposite vertices, m
 /// @return        d, sinPhi, q1..q4, valid
 BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4);
 
-/// Exercise 5.2 — projection of the bending constraint C = φ − φ0 with
-/// \f$\varphi = \operatorname{atan2}(\sin\varphi,\ d) = \arccos(d)\f$ (sin φ and d from exercise 5.1).
+/// Exercise 5.2 — projection of the bending constraint (Projektion des Biege-Constraint)
+/// C = φ − φ0 with stiffness k, where \f$\varphi = \operatorname{atan2}(\sin\varphi,\ d) = \arccos(d)\f$
+/// (sin φ and d from exercise 5.1).
 ///
-/// The general PBD projection \f$\Delta\vec p_i = -s\,w_i\nabla_{\vec p_i}C\f$ with
-/// \f$ s = C / \sum_j w_j|\nabla_{\vec p_j}C|^2 \f$ and
-/// \f$\nabla_{\vec p_i}C = -\vec q_i/\sin\varphi\f$ (chain rule: \f$\frac{d}{dd}\arccos d = -1/\sqrt{1-d^2}
-/// = -1/\sin\varphi\f$; q_i = ∂d/∂p_i from exercise 5.1) gives
-/// \f[ \Delta\vec p_i = +\frac{w_i\,\sin\varphi\,(\varphi-\varphi_0)}{\sum_j w_j|\vec q_j|^2}\,\vec q_i\;k \f]
-/// (the slides write \f$\sqrt{1-d^2}\f$ and arccos(d): the same numbers, but inaccurate near flat, see the top
-/// of this file). The slides print a minus sign here, which is right for their q-vectors (−∂d/∂p_i) and wrong for
-/// ours: the two sign flips cancel (see the task sheet). Returns zero corrections, never NaN, when the stencil is not
-/// valid, when sin φ < 1e-6 (flat or folded, i.e. 1 − d² < 1e-12: arccos is not differentiable there), when
-/// Σ w_j|q_j|² is zero (all pinned) or when C = 0.
+/// Requirements (derive the corrections with the general PBD projection and the chain rule; the task
+/// sheet's sign discussion is part of it):
+/// - the corrections are mass-weighted steps along \f$ -\nabla_{\vec p_i} C \f$, like the distance
+///   constraint's, so \f$ \sum_i m_i\Delta\vec p_i = 0 \f$ and \f$ \sum_i \vec p_i\times m_i\Delta\vec p_i = 0 \f$
+///   (no momentum, no angular momentum) and a pinned particle (w = 0) does not move;
+/// - they reduce |C|: with k = 1, one projection removes more than 90 % of a small deviation (all of
+///   it to first order); the stiffness k scales the corrections;
+/// - near flat they stay accurate: compute with sin φ and atan2 as at the top of this file, not with
+///   √(1 − d²) and arccos(d) as the slides write them.
+/// Returns zero corrections, never NaN, when the stencil is not valid, when sin φ < 1e-6 (flat or
+/// folded, i.e. 1 − d² < 1e-12: arccos is not differentiable there), when Σ w_j|q_j|² is zero (all
+/// pinned) or when C = 0.
 /// @param p1, p2, p3, p4  positions as in bendingGradients(), m
 /// @param w1, w2, w3, w4  inverse masses, 1/kg
 /// @param phi0            rest angle φ0, rad

@@ -29,10 +29,11 @@ struct CollisionConstraint {
 
 /// Exercise 6.1 — collision constraint against a plane (collider.point = a point on it,
 /// collider.normal = outward unit normal). The plane bounds a half-space, so the path x → p
-/// cannot pass it unnoticed: generate a constraint when the predicted position is closer than h,
-/// \f$ (\vec p - \vec q_s)\cdot\vec n_s < h \f$, with q_s = collider.point and n_s = collider.normal.
-/// Fill every field of `out` (start = x, vnBefore = (p − x)·n_s/Δt, friction and restitution of the
-/// collider).
+/// cannot pass it unnoticed: generate a constraint exactly when the predicted position violates it,
+/// C(p) < 0, with q_s = collider.point and n_s = collider.normal (however far below the plane p is).
+/// Fill every field of `out`: i, q, n, start = x, the collider's friction and restitution, and vnBefore,
+/// the normal component (along n_s) of the velocity the prediction implies over the step, (p − x)/Δt
+/// (negative while approaching).
 /// @param i         particle index
 /// @param x         position at the start of the step, m
 /// @param p         predicted position, m
@@ -46,25 +47,30 @@ bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider
 
 /// Exercise 6.2 — collision constraint against a sphere (centre c = collider.point, radius
 /// R = collider.radius), generated along the path x → p so that a fast particle cannot tunnel
-/// through. With the inflated radius R_h = R + h:
-/// - x outside (|x − c| ≥ R_h): find the first t in [0, 1] with |x + t (p − x) − c| = R_h; if there
-///   is one, the entry point is e = x + t (p − x), \f$\vec n_s = (\vec e - \vec c)/|\vec e - \vec c|\f$;
-/// - x inside (|x − c| < R_h): generate only if |p − c| < R_h, with \f$\vec n_s = (\vec p - \vec c)/|\vec p - \vec c|\f$
-///   (p at the centre: use the direction of x − c, or (0, 1, 0) if that is zero too);
-/// - then \f$\vec q_s = \vec c + R\,\vec n_s\f$, and the other fields as in generatePlaneConstraint().
+/// through. Work with the inflated sphere of radius R_h = R + h (the thickness included).
+/// Requirements:
+/// - x outside the inflated sphere: generate exactly when the straight path from x to p enters it
+///   (also when p itself is outside again: no tunnelling); n_s is the outward unit normal of the sphere
+///   at the point where the path *first* enters it (the entry point);
+/// - x inside (|x − c| < R_h): generate only if p is inside too, with n_s pointing from c towards p
+///   (p at the centre: the direction of x − c, or (0, 1, 0) if that is zero too);
+/// - q_s is the point of the sphere's surface (radius R, not R_h) in the direction n_s from c, so that
+///   C = (p − q_s)·n_s − h measures the distance to the inflated sphere along n_s;
+/// - the other fields as in generatePlaneConstraint(); never NaN (also for a particle at rest).
 /// @param i, x, p, h, dt, out  as in generatePlaneConstraint()
 /// @param collider             a sphere
 /// @return                     true if a constraint was generated
 bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
                               CollisionConstraint* out);
 
-/// Exercise 6.3 — projection of a collision constraint, only when it is violated (C(p) < 0):
-/// \f[ \Delta\vec p = -C(\vec p)\,\vec n_s \f]
-/// (a static collider has infinite mass, so the particle moves the whole way), plus static friction
-/// at position level: with the moved point p' = p + Δp and its tangential displacement over the step
-/// \f$\vec t = (\vec p' - \vec x) - ((\vec p' - \vec x)\cdot\vec n_s)\,\vec n_s\f$ (x = c.start):
-/// if \f$|\vec t| < \mu\,|C(\vec p)|\f$ the particle sticks, \f$\Delta\vec p \leftarrow \Delta\vec p - \vec t\f$.
-/// Not violated, or w = 0 (pinned): zero.
+/// Exercise 6.3 — projection of a collision constraint, only when it is violated (C(p) < 0).
+///
+/// Requirements: a static collider has infinite mass, so the particle alone moves, the shortest way
+/// out (along n_s) and the whole way: C(p + Δp) = 0 after one projection. Plus static friction at
+/// position level: take the moved point p' = p + Δp and its tangential displacement over the step,
+/// the part of p' − x perpendicular to n_s (x = c.start); if that is shorter than μ times the
+/// penetration depth |C(p)|, the particle sticks: Δp also removes the tangential displacement.
+/// Not violated (C ≥ 0: an inequality never pulls), or w = 0 (pinned): zero.
 /// @param p  predicted position, m
 /// @param w  inverse mass, 1/kg
 /// @param h  thickness, m
@@ -72,13 +78,16 @@ bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collide
 /// @return   Δp, m
 Vec3 projectCollisionConstraint(const Vec3& p, double w, double h, const CollisionConstraint& c);
 
-/// Exercise 6.4 — velocityUpdate (line (16)): for every constraint generated this step, with
-/// v_n = v_i·n_s the normal velocity after the solve:
-/// - restitution: \f$ v_n' = \max(v_n,\ -e\,v_{n,before}) \f$;
-/// - Coulomb (kinetic) friction: the tangential velocity \f$\vec v_t = \vec v_i - v_n\vec n_s\f$ loses
-///   \f$\min(|\vec v_t|,\ \mu\,\Delta v_n)\f$ of its length, with the normal velocity change of the
-///   solve \f$\Delta v_n = \max(0,\ v_n - v_{n,before})\f$;
-/// - \f$ \vec v_i \leftarrow \vec v_t' + v_n'\,\vec n_s \f$.
+/// Exercise 6.4 — velocityUpdate (line (16)): for every constraint generated this step, split the
+/// particle's velocity after the solve into its normal part v_n (along n_s) and its tangential part v_t.
+/// Requirements:
+/// - restitution (coefficient e): the new normal velocity is the larger of v_n and the incoming
+///   normal velocity vnBefore reflected at the surface and scaled by e; a ball dropped from height H
+///   rebounds to e²H;
+/// - Coulomb (kinetic) friction: the tangential speed shrinks by μ times the normal velocity change of
+///   the solve (v_n − vnBefore, counted only when positive), keeps its direction, and stops at zero:
+///   friction stops a particle but never reverses it; a block on an incline slides with g(sin θ − μ cos θ);
+/// - the velocity is reassembled from the new normal and tangential parts.
 /// @param v         velocities, 3 x N, m/s (changed in place)
 /// @param contacts  the constraints generated this step
 void velocityUpdate(Matrix3X& v, const std::vector<CollisionConstraint>& contacts);
