@@ -35,8 +35,12 @@ foreach(NN IN LISTS CLOTHLAB_STAGES)
   string(APPEND _stages_json "    {\"stage\": \"${NN}\", \"dir\": \"${CLOTHLAB_STAGE_DIR_${NN}}\",
      \"tests\": [\"$<JOIN:$<TARGET_OBJECTS:gradedtests_${NN}>,\", \">\"],
      \"reference\": ${_ref},
-     \"stub\": [\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_exercises>,\", \">\"]}")
-  list(APPEND _kit_deps gradedtests_${NN} stage_${NN}_exercises)
+     \"stub\": [\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_stubs>,\", \">\"]}")
+  get_target_property(_stubs stage_${NN}_stubs ALIASED_TARGET)
+  if(NOT _stubs)
+    set(_stubs stage_${NN}_stubs)
+  endif()
+  list(APPEND _kit_deps gradedtests_${NN} ${_stubs})
 endforeach()
 
 file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{

@@ -3,6 +3,7 @@
 # OBJECT libraries, one per source of code:
 #   stage_NN_exercises   the student stubs (exercises/NN_name)
 #   stage_NN_solutions   the reference (solutions/NN_name), when present
+#   stage_NN_stubs       the untouched stubs (framework/stubs/NN_name in the student copy, else exercises/)
 # and CLOTHLAB_IMPL_NN names the one the apps and the other stages' tests link.
 
 file(GLOB _stage_dirs RELATIVE "${PROJECT_SOURCE_DIR}/exercises" "${PROJECT_SOURCE_DIR}/exercises/[0-9][0-9]_*")
@@ -28,6 +29,14 @@ foreach(_dir IN LISTS _stage_dirs)
   list(APPEND CLOTHLAB_STAGES ${NN})
   set(CLOTHLAB_STAGE_DIR_${NN} "${_dir}" CACHE INTERNAL "")
   clothlab_stage_library(stage_${NN}_exercises "${PROJECT_SOURCE_DIR}/exercises/${_dir}")
+  # The untouched stubs, for the grading kit (a stage's functions; the stand-in for a stage that does
+  # not compile). In the student copy exercises/ is the student's work: ./lab release keeps the
+  # pristine stubs in framework/stubs/, so grading never waits for the student's files to compile.
+  if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/framework/stubs/${_dir}")
+    clothlab_stage_library(stage_${NN}_stubs "${PROJECT_SOURCE_DIR}/framework/stubs/${_dir}")
+  else()
+    add_library(stage_${NN}_stubs ALIAS stage_${NN}_exercises)
+  endif()
   set(_has_solution OFF)
   if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/solutions/${_dir}")
     clothlab_stage_library(stage_${NN}_solutions "${PROJECT_SOURCE_DIR}/solutions/${_dir}")

@@ -13,10 +13,11 @@ fail() { echo "FAIL: $*"; exit 1; }
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
 [[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
 # Exactly the committed files: nothing untracked, no build output.
-{ git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/classroom.yml; } | sort >"$tmp/want.txt"
+{ git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/classroom.yml
+  git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'; } | sort >"$tmp/want.txt"
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
-  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the Classroom workflow: $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the Classroom workflow and framework/stubs/: $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
 
 cd "$tmp/copy" || fail "cd"
 # The build is outside the copy, so the copy stays as released (the leak check reads it last).
