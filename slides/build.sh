@@ -28,6 +28,10 @@ if [[ ${SLIDES_FIGURES:-} != skip ]]; then
 fi
 
 decks=("$SRC"/[0-9][0-9]_*.md)
+# every figure a deck names must have been made (pandoc would only warn and drop it)
+for f in $(grep -ho 'figures/[A-Za-z0-9_]*\.png' "${decks[@]}" | sort -u); do
+  [[ -f $OUT/$f ]] || die "$OUT/$f is missing: slides/make_figures.sh must make every figure the decks name"
+done
 opts=(-t beamer --slide-level=2 -H "$SRC/preamble.tex" --resource-path="$OUT:$SRC"
       -V aspectratio=169 -V theme=Madrid -V fontsize=10pt
       -V "institute=clothlab -- after \"Advanced Game Physics -- Stoffsimulation\" (FAU, WS 2015/16)"
@@ -42,7 +46,13 @@ for md in "${decks[@]}"; do
     || die "pandoc failed on $md"
   echo "wrote $OUT/$name.pdf"
 done
-pandoc "${opts[@]}" --toc -M "title=Cloth simulation (Stoffsimulation)" \
+# the whole course: an overview slide (made from the decks' titles, in OUT_DIR), then every deck
+{
+  echo "## The ten chapters"
+  echo
+  for md in "${decks[@]}"; do echo "1. $(sed -n 's/^# //p' "$md" | head -n 1)"; done
+} >"$OUT/course_overview.md"
+pandoc "${opts[@]}" -M "title=Cloth simulation (Stoffsimulation)" \
   -M "subtitle=Mass-spring systems, mass-spring networks, Position Based Dynamics" \
-  "${decks[@]}" -o "$OUT/course.pdf" || die "pandoc failed on the whole course"
+  "$OUT/course_overview.md" "${decks[@]}" -o "$OUT/course.pdf" || die "pandoc failed on the whole course"
 echo "wrote $OUT/course.pdf ($((SECONDS - t0)) s for the PDFs)"
