@@ -1,5 +1,6 @@
 #include "common.h"
 
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -39,6 +40,23 @@ void writeFile(const fs::path& p, const std::string& text) {
     std::ofstream out(p, std::ios::binary);
     out << text;
     if (!out) die(p.string() + ": (file): cannot write");
+}
+
+std::string capture(const std::string& cmd) {
+    std::string out;
+    FILE* p = ::popen(cmd.c_str(), "r");
+    if (!p) die("cannot run: " + cmd);
+    char buf[4096];
+    size_t k;
+    while ((k = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, k);
+    ::pclose(p);
+    return out;
+}
+
+std::string shellQuote(const fs::path& p) {
+    std::string r = "'";
+    for (char c : p.string()) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return r + "'";
 }
 
 uint64_t fnv1a(const std::string& data, uint64_t h) {

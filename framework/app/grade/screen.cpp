@@ -2,7 +2,6 @@
 
 #include <cxxabi.h>
 
-#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -234,33 +233,9 @@ std::vector<Finding> screenSource(const std::string& text, const std::string& di
 
 // ---- Object screen ------------------------------------------------------------------------------
 
-namespace {
-
-/// stdout of a command (tools run on files the grader wrote; paths are quoted).
-std::string capture(const std::string& cmd) {
-    std::string out;
-    std::unique_ptr<FILE, int (*)(FILE*)> p(::popen(cmd.c_str(), "r"), ::pclose);
-    if (!p) die("cannot run: " + cmd);
-    std::array<char, 4096> buf;
-    size_t k;
-    while ((k = std::fread(buf.data(), 1, buf.size(), p.get())) > 0) out.append(buf.data(), k);
-    return out;
-}
-
-std::string q(const fs::path& p) {
-    std::string r = "'";
-    for (char c : p.string()) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return r + "'";
-}
-
-struct Symbol {
-    std::string name;
-    char type;
-};
-
-std::vector<Symbol> nmSymbols(const fs::path& file, bool dynamic) {
+std::vector<Symbol> symbolsOf(const fs::path& file, bool dynamic) {
     std::vector<Symbol> out;
-    std::istringstream in(capture(std::string("nm -P ") + (dynamic ? "-D " : "") + q(file) + " 2>/dev/null"));
+    std::istringstream in(capture(std::string("nm -P ") + (dynamic ? "-D " : "") + shellQuote(file) + " 2>/dev/null"));
     std::string line;
     while (std::getline(in, line)) {
         std::istringstream l(line);
@@ -272,6 +247,8 @@ std::vector<Symbol> nmSymbols(const fs::path& file, bool dynamic) {
     }
     return out;
 }
+
+namespace {
 
 const std::set<std::string> kAllowedC = {
     "_GLOBAL_OFFSET_TABLE_", "__gxx_personality_v0", "_Unwind_Resume", "__cxa_allocate_exception", "__cxa_free_exception",
@@ -345,7 +322,7 @@ std::string demangle(const std::string& symbol) {
 std::set<std::string> definedSymbols(const fs::path& file) {
     const bool dynamic = file.string().find(".so") != std::string::npos;
     std::set<std::string> out;
-    for (const auto& s : nmSymbols(file, dynamic))
+    for (const auto& s : symbolsOf(file, dynamic))
         if (std::string("TDBRCVWiu").find(s.type) != std::string::npos) out.insert(s.name);
     return out;
 }
@@ -353,7 +330,7 @@ std::set<std::string> definedSymbols(const fs::path& file) {
 std::vector<Finding> screenObject(const fs::path& object, const std::string& display, const ObjectRules& rules) {
     std::vector<Finding> found;
     auto report = [&](const std::string& what) { found.push_back({display, what}); };
-    for (const auto& s : nmSymbols(object, false)) {
+    for (const auto& s : symbolsOf(object, false)) {
         const std::string d = demangle(s.name);
         const bool defined_global = std::string("TDBRCVWiu").find(s.type) != std::string::npos;
         if (s.type == 'i') { report("defines `" + d + "` as an indirect function (ifunc): not allowed"); continue; }
@@ -380,12 +357,12 @@ std::vector<Finding> screenObject(const fs::path& object, const std::string& dis
         else report("uses `" + d + "`, which a submission may not use (allowed: maths, memory, strings, exceptions, printing to the console, the clothlab API)");
     }
     // Sections: no constructors/destructors run outside the tests except <iostream>'s initialiser.
-    const std::string sections = capture("readelf -S -W " + q(object) + " 2>/dev/null");
+    const std::string sections = capture("readelf -S -W " + shellQuote(object) + " 2>/dev/null");
     for (const char* bad : {".ctors", ".dtors", ".preinit_array", ".fini_array"})
         if (sections.find(std::string(bad) + " ") != std::string::npos)
             report(std::string("has a ") + bad + " section: code that runs before or after the tests is not allowed");
     if (sections.find(".init_array") != std::string::npos) {
-        const std::string relocs = capture("readelf -r -W " + q(object) + " 2>/dev/null");
+        const std::string relocs = capture("readelf -r -W " + shellQuote(object) + " 2>/dev/null");
         std::istringstream in(relocs);
         std::string line, section;
         bool iostream_init = false;
@@ -418,7 +395,7 @@ std::vector<Finding> screenObject(const fs::path& object, const std::string& dis
             report("runs code before the tests start (a namespace-scope object with a dynamic initialiser): make "
                    "namespace-scope constants constexpr, or move the object into the function that uses it");
     }
-    const std::string code = capture("objdump -d --no-show-raw-insn " + q(object) + " 2>/dev/null");
+    const std::string code = capture("objdump -d --no-show-raw-insn " + shellQuote(object) + " 2>/dev/null");
     if (std::regex_search(code, std::regex("\\s(syscall|sysenter|int\\s+\\$0x80)\\b")))
         report("contains a system-call instruction: not allowed");
     return found;

@@ -46,6 +46,14 @@ struct ObjectRules {
 /// Screens one object file compiled from the submission (runs nm, readelf and objdump).
 std::vector<Finding> screenObject(const fs::path& object, const std::string& display, const ObjectRules& rules);
 
+struct Symbol {
+    std::string name;  ///< mangled, without a version suffix (@@GLIBC_2.2.5)
+    char type;         ///< nm's letter: T, W, U, ...
+};
+
+/// Every symbol nm lists for an object, archive or (dynamic) shared library.
+std::vector<Symbol> symbolsOf(const fs::path& file, bool dynamic = false);
+
 /// Global symbols an object, archive or shared library defines (nm; dynamic symbols for .so).
 std::set<std::string> definedSymbols(const fs::path& file);
 

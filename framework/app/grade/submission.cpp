@@ -24,17 +24,6 @@ std::vector<fs::path> paths(const json& j) {
     return out;
 }
 
-std::string run(const std::string& cmd) {
-    std::string out;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return out;
-    char buf[4096];
-    size_t k;
-    while ((k = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, k);
-    ::pclose(p);
-    return out;
-}
-
 /// Content of a file's identity for the cache: path, size, modification time.
 std::string stamp(const fs::path& p) {
     struct stat st {};
@@ -86,25 +75,14 @@ Kit loadKit(const fs::path& file) {
     for (const auto& e : fs::recursive_directory_iterator(k.include_dir)) fp += stamp(e.path());
     k.fingerprint = hex(fnv1a(fp));
     // Symbols: each stage's own functions; what the rest of the link and the runtime define.
-    // nm -P --defined-only FILE: (name, type) of every global definition.
-    const auto definitions = [](const fs::path& f) {
-        std::vector<std::pair<std::string, char>> out;
-        std::istringstream in(run("nm -P --defined-only '" + f.string() + "' 2>/dev/null"));
-        std::string line, name, type;
-        while (std::getline(in, line)) {
-            std::istringstream l(line);
-            if ((l >> name >> type) && type.size() == 1) out.push_back({name, type[0]});
-        }
-        return out;
-    };
     for (auto& st : k.stages) {
         for (const auto& o : st.stub)
-            for (const auto& [name, type] : definitions(o)) {
+            for (const auto& [name, type] : symbolsOf(o)) {
                 if (type == 'T' && name.rfind("_ZN8clothlab", 0) == 0) st.api.insert(name);  // the stage's functions
                 if (type == 'W' || type == 'V') k.header_instances.insert(name);
             }
         for (const auto& o : st.reference)
-            for (const auto& [name, type] : definitions(o))
+            for (const auto& [name, type] : symbolsOf(o))
                 if (type == 'W' || type == 'V') k.header_instances.insert(name);
     }
     std::vector<fs::path> linked = k.main_objects;
@@ -114,12 +92,12 @@ Kit loadKit(const fs::path& file) {
         linked.insert(linked.end(), st.reference.begin(), st.reference.end());
     }
     for (const auto& f : linked)
-        for (const auto& [name, type] : definitions(f)) {
+        for (const auto& [name, type] : symbolsOf(f)) {
             if (std::string("TDBRCiu").find(type) != std::string::npos) k.linked_symbols.insert(name);
             else if (type == 'W' || type == 'V') k.linked_weak.insert(name);
         }
     for (const char* lib : {"libc.so.6", "libm.so.6", "libstdc++.so.6", "libgcc_s.so.1"}) {
-        std::string path = run("'" + k.compiler + "' -print-file-name=" + lib);
+        std::string path = capture(shellQuote(k.compiler) + " -print-file-name=" + lib);
         path.erase(path.find_last_not_of("\n ") + 1);
         if (fs::exists(path)) {
             const auto s = definedSymbols(fs::canonical(path));
