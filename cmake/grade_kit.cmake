@@ -4,7 +4,9 @@
 #     compiled in a sandbox that sees these and its own files, nothing else of the tree;
 #   - the compiler and the flags this build compiles with (same ABI, same numerics);
 #   - per stage the object files of its graded tests, its reference (solutions/, when present)
-#     and its stub; the graded main(), the framework library and GoogleTest to link with.
+#     its stub and its proxies (the test side of running the submission in a process of its own);
+#   - the graded main(), the framework library and GoogleTest to link the test process with, and
+#     the main() of the submission process (framework/app/grade/remote/).
 set(_kit "${CMAKE_BINARY_DIR}/grade-kit")
 file(GLOB _public CONFIGURE_DEPENDS
   "${PROJECT_SOURCE_DIR}/framework/include/clothlab/core/*.h"
@@ -19,7 +21,8 @@ separate_arguments(_flags UNIX_COMMAND "-std=c++${CMAKE_CXX_STANDARD} ${CMAKE_CX
 list(JOIN _flags "\", \"" _flags_json)
 
 set(_stages_json "")
-set(_kit_deps clothlab-grade clothlab_graded_main clothlab_framework)
+set(_kit_deps clothlab-grade clothlab_graded_main clothlab_framework clothlab_remote_peer clothlab_remote_client
+  clothlab_submission_main)
 foreach(NN IN LISTS CLOTHLAB_STAGES)
   if(NOT TARGET gradedtests_${NN})
     continue()
@@ -35,12 +38,13 @@ foreach(NN IN LISTS CLOTHLAB_STAGES)
   string(APPEND _stages_json "    {\"stage\": \"${NN}\", \"dir\": \"${CLOTHLAB_STAGE_DIR_${NN}}\",
      \"tests\": [\"$<JOIN:$<TARGET_OBJECTS:gradedtests_${NN}>,\", \">\"],
      \"reference\": ${_ref},
-     \"stub\": [\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_stubs>,\", \">\"]}")
+     \"stub\": [\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_stubs>,\", \">\"],
+     \"proxy\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_remote_proxies_${NN}>,\", \">\"]}")
   get_target_property(_stubs stage_${NN}_stubs ALIASED_TARGET)
   if(NOT _stubs)
     set(_stubs stage_${NN}_stubs)
   endif()
-  list(APPEND _kit_deps gradedtests_${NN} ${_stubs})
+  list(APPEND _kit_deps gradedtests_${NN} ${_stubs} clothlab_remote_proxies_${NN})
 endforeach()
 
 file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
@@ -51,6 +55,9 @@ file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
   \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_graded_main>,\", \">\"],
   \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:GTest::gtest>\"],
   \"link_flags\": [\"-pthread\"],
+  \"client_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_remote_peer>;$<TARGET_OBJECTS:clothlab_remote_client>,\", \">\"],
+  \"server_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_submission_main>;$<TARGET_OBJECTS:clothlab_remote_peer>,\", \">\"],
+  \"server_link_flags\": [\"-lseccomp\"],
   \"points_dir\": \"${PROJECT_SOURCE_DIR}/tests\",
   \"stages\": [
 ${_stages_json}

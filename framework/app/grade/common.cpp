@@ -1,5 +1,6 @@
 #include "common.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -30,9 +31,13 @@ void die(const std::string& msg) {
 
 std::string readFile(const fs::path& p, size_t max_bytes) {
     std::ifstream in(p, std::ios::binary);
-    std::string s(max_bytes, '\0');
-    in.read(s.data(), static_cast<std::streamsize>(max_bytes));
-    s.resize(static_cast<size_t>(in.gcount()));
+    std::string s;
+    char chunk[65536];
+    while (s.size() < max_bytes) {
+        in.read(chunk, static_cast<std::streamsize>(std::min(sizeof chunk, max_bytes - s.size())));
+        if (in.gcount() <= 0) break;
+        s.append(chunk, static_cast<size_t>(in.gcount()));
+    }
     return s;
 }
 

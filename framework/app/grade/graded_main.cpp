@@ -7,6 +7,13 @@
 // SECRET` with the secret it sent, then `exit SECRET`, and the process exits with status 0. The
 // submission's code cannot produce these lines: it has no file-descriptor I/O (the screen rejects
 // it) and it does not know the secret; files it might write are never read.
+//
+// Linked by the grader, the submission's functions are proxies: the submission's code runs in a
+// second process, started from --clothlab-server=PATH (remote/peer.h), so the submission never
+// runs in this process, the one that knows the secret. This process is made non-dumpable, so that
+// process (same user) cannot trace it or read its memory through /proc either.
+#include <fcntl.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -81,12 +88,22 @@ std::string readSecret() {
 
 }  // namespace
 
+namespace clothlab::remote {
+/// The submission process's program (remote/client.cpp), from --clothlab-server=PATH.
+const char* serverPath = nullptr;
+}  // namespace clothlab::remote
+
 int main(int argc, char** argv) {
     bool channel = false;
-    for (int i = 1; i < argc; ++i)
+    const std::string server = "--clothlab-server=";
+    for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--clothlab-channel") == 0) channel = true;
+        if (server.compare(0, server.size(), argv[i], server.size()) == 0) clothlab::remote::serverPath = argv[i] + server.size();
+    }
     ::testing::InitGoogleTest(&argc, argv);
     if (channel) {
+        ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+        ::fcntl(kReportFd, F_SETFD, FD_CLOEXEC);
         const std::string secret = readSecret();
         if (secret.size() < 32) return 3;  // no channel: the grader did not start this process
         ::testing::UnitTest::GetInstance()->listeners().Append(new ChannelReporter(secret));

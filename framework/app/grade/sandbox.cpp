@@ -1,6 +1,7 @@
 #include "sandbox.h"
 
 #include <fcntl.h>
+#include <sched.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -140,6 +141,12 @@ RunOutcome runSandboxed(const SandboxRun& run) {
             const int secret = ::fcntl(secret_pipe[0], F_DUPFD_CLOEXEC, 10);
             const int report = ::fcntl(report_pipe[1], F_DUPFD_CLOEXEC, 10);
             if (secret < 0 || report < 0 || ::dup2(secret, 3) != 3 || ::dup2(report, 4) != 4) ::_exit(125);
+        }
+        if (run.cpu >= 0) {
+            cpu_set_t set;
+            CPU_ZERO(&set);
+            CPU_SET(run.cpu, &set);
+            ::sched_setaffinity(0, sizeof set, &set);
         }
         setLimit(RLIMIT_CPU, static_cast<rlim_t>(run.limits.cpu_seconds));
         setLimit(RLIMIT_AS, static_cast<rlim_t>(run.limits.address_space));

@@ -36,6 +36,7 @@ struct SandboxRun {
     fs::path log;              ///< stdout and stderr of the program
     fs::path workdir = "/tmp";
     bool channel = false;  ///< open the graded-test channel (fd 3: secret in, fd 4: report out)
+    int cpu = -1;          ///< ≥ 0: run on this CPU only (a test and its submission process share one)
 };
 
 struct RunOutcome {

@@ -1,5 +1,6 @@
 #include "submission.h"
 
+#include <sched.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -56,9 +57,13 @@ Kit loadKit(const fs::path& file) {
         k.main_objects = paths(j.at("main_objects"));
         k.libs = paths(j.at("libs"));
         for (const auto& f : j.at("link_flags")) k.link_flags.push_back(f);
+        k.client_objects = paths(j.at("client_objects"));
+        k.server_objects = paths(j.at("server_objects"));
+        for (const auto& f : j.at("server_link_flags")) k.server_link_flags.push_back(f);
         k.points_dir = j.at("points_dir").get<std::string>();
         for (const auto& s : j.at("stages")) {
-            KitStage st{s.at("stage"), s.at("dir"), paths(s.at("tests")), paths(s.at("reference")), paths(s.at("stub")), {}};
+            KitStage st{s.at("stage"), s.at("dir"), paths(s.at("tests")), paths(s.at("reference")), paths(s.at("stub")),
+                        paths(s.at("proxy")), {}};
             k.stages.push_back(st);
         }
     } catch (const std::exception& e) {
@@ -66,11 +71,11 @@ Kit loadKit(const fs::path& file) {
     }
     std::string fp = readFile(file) + stamp(fs::canonical("/proc/self/exe"));  // a new grader regrades
     for (const auto& st : k.stages) {
-        for (const auto* list : {&st.tests, &st.reference, &st.stub})
+        for (const auto* list : {&st.tests, &st.reference, &st.stub, &st.proxy})
             for (const auto& p : *list) fp += stamp(p);
         fp += readFile(k.points_dir / (st.dir + ".points.json"));
     }
-    for (const auto* list : {&k.main_objects, &k.libs})
+    for (const auto* list : {&k.main_objects, &k.libs, &k.client_objects, &k.server_objects})
         for (const auto& p : *list) fp += stamp(p);
     for (const auto& e : fs::recursive_directory_iterator(k.include_dir)) fp += stamp(e.path());
     k.fingerprint = hex(fnv1a(fp));
@@ -86,7 +91,7 @@ Kit loadKit(const fs::path& file) {
                 if (type == 'W' || type == 'V') k.header_instances.insert(name);
     }
     std::vector<fs::path> linked = k.main_objects;
-    linked.insert(linked.end(), k.libs.begin(), k.libs.end());
+    for (const auto* list : {&k.libs, &k.client_objects, &k.server_objects}) linked.insert(linked.end(), list->begin(), list->end());
     for (const auto& st : k.stages) {
         linked.insert(linked.end(), st.tests.begin(), st.tests.end());
         linked.insert(linked.end(), st.reference.begin(), st.reference.end());
@@ -96,7 +101,7 @@ Kit loadKit(const fs::path& file) {
             if (std::string("TDBRCiu").find(type) != std::string::npos) k.linked_symbols.insert(name);
             else if (type == 'W' || type == 'V') k.linked_weak.insert(name);
         }
-    for (const char* lib : {"libc.so.6", "libm.so.6", "libstdc++.so.6", "libgcc_s.so.1"}) {
+    for (const char* lib : {"libc.so.6", "libm.so.6", "libstdc++.so.6", "libgcc_s.so.1", "libseccomp.so.2"}) {
         std::string path = capture(shellQuote(k.compiler) + " -print-file-name=" + lib);
         path.erase(path.find_last_not_of("\n ") + 1);
         if (fs::exists(path)) {
@@ -274,18 +279,36 @@ std::string unescape(const std::string& s) {
     return r;
 }
 
+/// The CPUs this grader may use; worker w of a stage pins its tests to cpus[w % size].
+std::vector<int> usableCpus() {
+    std::vector<int> cpus;
+    cpu_set_t set;
+    if (::sched_getaffinity(0, sizeof set, &set) == 0)
+        for (int c = 0; c < CPU_SETSIZE; ++c)
+            if (CPU_ISSET(c, &set)) cpus.push_back(c);
+    return cpus;
+}
+
 /// One test in its own sandboxed process; the verdict comes from the channel (see graded_main.cpp).
-TestResult runTest(const fs::path& exe, const std::string& name, int timeout_s, const fs::path& log) {
+/// With a `server` (the submission process's program) the test process starts it for the
+/// submission's code; test and submission process share one CPU (`cpu`, or any when < 0).
+TestResult runTest(const fs::path& exe, const fs::path& server, const std::string& name, int timeout_s, int cpu,
+                   const fs::path& log) {
     TestResult r;
     r.name = name;
     SandboxRun run;
     run.argv = {"/grade/test", "--gtest_filter=" + name, "--clothlab-channel", "--gtest_color=no"};
     run.mounts = {{exe, "/grade/test", false}};
+    if (!server.empty()) {
+        run.argv.push_back("--clothlab-server=/grade/submission");
+        run.mounts.push_back({server, "/grade/submission", false});
+    }
     run.limits.cpu_seconds = timeout_s + 1;
     run.limits.file_size = 16LL << 20;  // its log too
     run.timeout_seconds = timeout_s;
     run.log = log;
     run.channel = true;
+    run.cpu = cpu;
     const RunOutcome out = runSandboxed(run);
     bool started = false, ended_passed = false, exited = false;
     std::string failures;
@@ -322,8 +345,8 @@ TestResult runTest(const fs::path& exe, const std::string& name, int timeout_s, 
 }
 
 /// Runs the tests of `points` against exe with `jobs` processes at a time; after two timeouts the rest are not run.
-StageResult runStage(const fs::path& points_dir, const std::string& stage, const fs::path& exe, int timeout_s, int jobs,
-                     const fs::path& logs) {
+StageResult runStage(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& server,
+                     int timeout_s, int jobs, const fs::path& logs) {
     const json points = loadPoints(points_dir, stage);
     StageResult s;
     s.stage = stage;
@@ -333,13 +356,15 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
     s.tests.resize(names.size());
     std::atomic<int> timeouts{0};
     fs::create_directories(logs);
-    parallelFor(static_cast<int>(names.size()), jobs, [&](int i) {
+    const std::vector<int> cpus = usableCpus();
+    parallelFor(static_cast<int>(names.size()), jobs, [&](int i, int worker) {
         TestResult r;
         if (timeouts >= 2) {
             r.name = names[i];
             r.message = "not run: two tests of this stage timed out already";
         } else {
-            r = runTest(exe, names[i], timeout_s, logs / (stage + "_" + std::to_string(i) + ".log"));
+            const int cpu = cpus.empty() ? -1 : cpus[static_cast<size_t>(worker) % cpus.size()];
+            r = runTest(exe, server, names[i], timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
             if (r.message.rfind("timed out", 0) == 0) ++timeouts;
         }
         r.max_points = points["tests"][names[i]].get<double>();
@@ -362,6 +387,51 @@ json hintsTaken(const fs::path& folder, const std::string& stage) {
         if (std::regex_match(it.key(), task) && it->is_number_integer() && it->get<int>() > 0 && it->get<int>() < 10)
             out[it.key()] = it->get<int>();
     return out;
+}
+
+/// Links `inputs` (sandboxed) into a program called `name`, reused from the cache when the key is
+/// the same byte for byte; `contents` are objects whose bytes go into the key (the submission's).
+/// On failure: empty path, *problem says why (the linker's first lines, object names as sources).
+fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const std::vector<std::string>& flags,
+                     const std::vector<fs::path>& contents, const std::string& name, const GradeOptions& o,
+                     std::string* problem) {
+    std::string key = kit.fingerprint + name + ";";
+    for (const auto& p : inputs) key += stamp(p);  // objects of the shared cache never change in place
+    for (const auto& f : flags) key += f + ";";
+    for (const auto& p : contents) key += readFile(p, 256u << 20);
+    const std::string hash = hex(fnv1a(key));
+    const fs::path bin = o.shared_cache.empty() ? o.work / "bin" : o.shared_cache / ("bin-" + name + "-" + hash);
+    const fs::path exe = bin / name;
+    const fs::path key_file = bin / (name + ".key");
+    std::lock_guard<std::mutex> lock(folderLock(bin));
+    // Reused only when the stored key is byte for byte this key (not on the hash alone).
+    if (fs::exists(exe) && fs::exists(key_file) && readFile(key_file, 512u << 20) == key) return exe;
+    fs::remove(exe);
+    makeWritableForSandbox(bin);
+    SandboxRun r;
+    r.argv = {kit.compiler};
+    for (const auto& p : inputs) {
+        r.argv.push_back(p.string());
+        if (std::find_if(r.mounts.begin(), r.mounts.end(), [&](const Mount& mm) { return mm.host == p; }) == r.mounts.end())
+            r.mounts.push_back({p, p, false});
+    }
+    r.argv.insert(r.argv.end(), flags.begin(), flags.end());
+    r.argv.insert(r.argv.end(), {"-o", "/out/" + name});
+    r.mounts.push_back({bin, "/out", true});
+    r.limits.cpu_seconds = 120;
+    r.limits.processes = 16;
+    r.limits.file_size = 512LL << 20;
+    r.timeout_seconds = 180;
+    r.log = o.work / ("link_" + name + ".log");
+    const RunOutcome out = runSandboxed(r);
+    if (out.exit_code != 0 || !fs::exists(exe)) {
+        std::string log = readFile(r.log, 64u << 10);
+        log = std::regex_replace(log, std::regex("[^\n]*/obj/[0-9]+/([A-Za-z0-9_.-]+)\\.o"), "$1.cpp");
+        *problem = firstLines(log, 8, "");
+        return {};
+    }
+    writeFile(key_file, key);
+    return exe;
 }
 
 }  // namespace
@@ -390,7 +460,7 @@ StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, co
         if (!points["tests"].contains(n)) die(points["file"].get<std::string>() + ": tests." + n + ": the graded test has no points");
     for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it)
         if (!names.count(it.key())) die(points["file"].get<std::string>() + ": tests." + it.key() + ": no such test in " + exe.string());
-    return runStage(points_dir, stage, fs::absolute(exe), timeout_seconds, jobs, tmp);
+    return runStage(points_dir, stage, fs::absolute(exe), {}, timeout_seconds, jobs, tmp);
 }
 
 std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, const GradeOptions& o) {
@@ -425,57 +495,41 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
             results.push_back(ungradedStage(kit.points_dir, st.stage, c.status, c.problem));
             continue;
         }
-        std::vector<fs::path> inputs = kit.main_objects;
-        inputs.insert(inputs.end(), st.tests.begin(), st.tests.end());
-        inputs.insert(inputs.end(), c.objects.begin(), c.objects.end());
+        // The test process links the graded tests, our code for the stages that come from us, and
+        // proxies for those that come from the submission; the submission process links those.
+        std::vector<fs::path> client = kit.main_objects, server = kit.server_objects, submitted;
+        client.insert(client.end(), st.tests.begin(), st.tests.end());
         for (const auto& other : kit.stages) {
-            if (other.stage == st.stage) continue;
-            const auto own = compiled.find(other.stage);
             const std::vector<fs::path>* use = &other.stub;
-            if (o.use_reference && !other.reference.empty()) use = &other.reference;
-            else if (own != compiled.end() && own->second.status == "graded") use = &own->second.objects;
-            inputs.insert(inputs.end(), use->begin(), use->end());
+            bool theirs = false;
+            if (other.stage == st.stage) {
+                use = &c.objects;
+                theirs = true;
+            } else if (o.use_reference && !other.reference.empty()) {
+                use = &other.reference;
+            } else if (const auto own = compiled.find(other.stage); own != compiled.end() && own->second.status == "graded") {
+                use = &own->second.objects;
+                theirs = true;
+            }
+            client.insert(client.end(), theirs ? other.proxy.begin() : use->begin(), theirs ? other.proxy.end() : use->end());
+            server.insert(server.end(), use->begin(), use->end());
+            if (theirs) submitted.insert(submitted.end(), use->begin(), use->end());
         }
-        inputs.insert(inputs.end(), kit.libs.begin(), kit.libs.end());
-        std::string key = kit.fingerprint;
-        for (const auto& p : inputs) key += stamp(p);  // objects of the shared cache never change in place
-        for (const auto& p : c.objects) key += readFile(p, 256u << 20);
-        const std::string hash = hex(fnv1a(key));
-        const fs::path bin = o.shared_cache.empty() ? o.work / "bin" : o.shared_cache / ("bin-" + st.stage + "-" + hash);
-        const fs::path exe = bin / ("grade_" + st.stage);
-        const fs::path hash_file = bin / ("grade_" + st.stage + ".key");
-        std::lock_guard<std::mutex> lock(folderLock(bin));
-        // Reused only when the stored key is byte for byte this key (not on the hash alone).
-        if (!(fs::exists(exe) && fs::exists(hash_file) && readFile(hash_file, 512u << 20) == key)) {
-            progress(o.progress, "linking stage " + st.stage);
-            fs::remove(exe);
-            makeWritableForSandbox(bin);
-            SandboxRun r;
-            r.argv = {kit.compiler};
-            for (const auto& p : inputs) {
-                r.argv.push_back(p.string());
-                if (std::find_if(r.mounts.begin(), r.mounts.end(), [&](const Mount& mm) { return mm.host == p; }) == r.mounts.end())
-                    r.mounts.push_back({p, p, false});
-            }
-            r.argv.insert(r.argv.end(), kit.link_flags.begin(), kit.link_flags.end());
-            r.argv.insert(r.argv.end(), {"-o", "/out/grade_" + st.stage});
-            r.mounts.push_back({bin, "/out", true});
-            r.limits.cpu_seconds = 120;
-            r.limits.processes = 16;
-            r.limits.file_size = 512LL << 20;
-            r.timeout_seconds = 180;
-            r.log = o.work / ("link_" + st.stage + ".log");
-            const RunOutcome out = runSandboxed(r);
-            if (out.exit_code != 0 || !fs::exists(exe)) {
-                std::string log = readFile(r.log, 64u << 10);
-                log = std::regex_replace(log, std::regex("[^\n]*/obj/[0-9]+/([A-Za-z0-9_.-]+)\\.o"), "$1.cpp");
-                results.push_back(ungradedStage(kit.points_dir, st.stage, "does not link", firstLines(log, 8, "")));
-                continue;
-            }
-            writeFile(hash_file, key);
+        client.insert(client.end(), kit.client_objects.begin(), kit.client_objects.end());
+        client.insert(client.end(), kit.libs.begin(), kit.libs.end());
+        server.insert(server.end(), kit.libs.begin(), kit.libs.end());
+        std::vector<std::string> server_flags = kit.link_flags;
+        server_flags.insert(server_flags.end(), kit.server_link_flags.begin(), kit.server_link_flags.end());
+        progress(o.progress, "linking stage " + st.stage);
+        std::string problem;
+        const fs::path exe = linkProgram(kit, client, kit.link_flags, {}, "grade_" + st.stage, o, &problem);
+        const fs::path serve = problem.empty() ? linkProgram(kit, server, server_flags, submitted, "submission_" + st.stage, o, &problem) : fs::path();
+        if (!problem.empty()) {
+            results.push_back(ungradedStage(kit.points_dir, st.stage, "does not link", problem));
+            continue;
         }
         progress(o.progress, "grading stage " + st.stage + " ...");
-        results.push_back(runStage(kit.points_dir, st.stage, exe, o.timeout_seconds, o.jobs, o.work / "logs"));
+        results.push_back(runStage(kit.points_dir, st.stage, exe, serve, o.timeout_seconds, o.jobs, o.work / "logs"));
     }
     for (auto& r : results)
         if (folders.count(r.stage)) r.hints = hintsTaken(folders.at(r.stage), r.stage);

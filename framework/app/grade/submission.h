@@ -17,6 +17,7 @@ struct KitStage {
     std::string stage;  ///< "01"
     std::string dir;    ///< "01_hooke"
     std::vector<fs::path> tests, reference, stub;  ///< object files: graded tests, solutions/ (may be empty), stub
+    std::vector<fs::path> proxy;  ///< the stage's functions as calls into the submission process (remote/)
     std::set<std::string> api;                      ///< mangled names the stage defines (from its stub)
 };
 
@@ -29,6 +30,9 @@ struct Kit {
     std::vector<fs::path> system_includes;
     std::vector<fs::path> main_objects, libs;
     std::vector<std::string> link_flags;
+    std::vector<fs::path> client_objects;     ///< the test process's side of the submission process (remote/)
+    std::vector<fs::path> server_objects;     ///< main() of the submission process and its side of the wire
+    std::vector<std::string> server_link_flags;
     fs::path points_dir;
     std::vector<KitStage> stages;
     std::string fingerprint;  ///< changes when anything in the kit changes (cache key)
@@ -62,7 +66,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
 StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, int timeout_seconds,
                         int jobs, const fs::path& tmp);
 
-/// Runs fn(0..count-1) on `jobs` threads.
+/// Runs fn(0..count-1) on `jobs` threads (fn(i, worker) when fn takes the worker's number too).
 template <class Fn>
 void parallelFor(int count, int jobs, Fn fn);
 
@@ -70,13 +74,17 @@ void parallelFor(int count, int jobs, Fn fn);
 
 #include <atomic>
 #include <thread>
+#include <type_traits>
 template <class Fn>
 void grade::parallelFor(int count, int jobs, Fn fn) {
     std::atomic<int> next{0};
     std::vector<std::thread> pool;
     for (int t = 0; t < std::max(1, std::min(jobs, count)); ++t)
-        pool.emplace_back([&] {
-            for (int i; (i = next++) < count;) fn(i);
+        pool.emplace_back([&, t] {
+            for (int i; (i = next++) < count;) {
+                if constexpr (std::is_invocable_v<Fn, int, int>) fn(i, t);
+                else fn(i);
+            }
         });
     for (auto& th : pool) th.join();
 }

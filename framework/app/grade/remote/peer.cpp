@@ -1,0 +1,207 @@
+// Messages between the test process and the submission process (see remote/peer.h).
+#include "remote/peer.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace clothlab::remote {
+
+namespace {
+
+constexpr uint32_t kMaxMessage = 1u << 30;  // bytes
+constexpr uint32_t kFirstCallback = 1u << 24;
+constexpr int kMessageStallMs = 5000;  // the longest pause inside one message
+
+enum class Thrown : uint8_t { NotImplemented = 1, InvalidArgument, OutOfRange, DomainError, LogicError, Other, Callback };
+
+bool writeAll(int fd, const char* p, size_t n) {
+    while (n > 0) {
+        const ssize_t k = ::write(fd, p, n);
+        if (k < 0 && errno == EINTR) continue;
+        if (k <= 0) return false;
+        p += k;
+        n -= static_cast<size_t>(k);
+    }
+    return true;
+}
+
+std::string thrown(Thrown kind, const std::string& text) {
+    std::string body(1, static_cast<char>(kind));
+    return body + text.substr(0, 4000);
+}
+
+}  // namespace
+
+void Peer::send(Kind kind, uint32_t id, const std::string& body) {
+    if (body.size() + 5 > kMaxMessage) throw PeerFailure("a message of " + std::to_string(body.size()) + " bytes is too long");
+    std::string message(9, '\0');  // one write() per message
+    const uint32_t length = static_cast<uint32_t>(body.size() + 5);
+    std::memcpy(&message[0], &length, 4);
+    message[4] = static_cast<char>(kind);
+    std::memcpy(&message[5], &id, 4);
+    message += body;
+    if (!writeAll(out_, message.data(), message.size())) throw PeerFailure("the other process is gone");
+}
+
+bool Peer::fill(size_t n, bool started) {
+    while (buffered_.size() - used_ < n) {
+        if (used_ > 0) {
+            buffered_.erase(0, used_);
+            used_ = 0;
+        }
+        // A message is written with one write(): once it has begun, the rest follows at once. A
+        // message that stops halfway (a forged length, say) is an error, not a wait for ever.
+        if (started) {
+            pollfd p{in_, POLLIN, 0};
+            int ready;
+            while ((ready = ::poll(&p, 1, kMessageStallMs)) < 0 && errno == EINTR) {
+            }
+            if (ready == 0) throw ProtocolError("a message stopped halfway");
+        }
+        char chunk[65536];
+        const ssize_t k = ::read(in_, chunk, sizeof chunk);
+        if (k < 0 && errno == EINTR) continue;
+        if (k <= 0) return false;
+        buffered_.append(chunk, static_cast<size_t>(k));
+    }
+    return true;
+}
+
+bool Peer::receive(Message& m) {
+    uint32_t length = 0;
+    if (!fill(9, false)) return false;  // length, kind, id
+    std::memcpy(&length, buffered_.data() + used_, 4);
+    if (length < 5 || length > kMaxMessage) throw ProtocolError("a message of impossible length");
+    const auto kind = static_cast<Kind>(buffered_[used_ + 4]);
+    if (kind != Kind::Invoke && kind != Kind::Return && kind != Kind::Throw) throw ProtocolError("a message of unknown kind");
+    if (!fill(4 + length, true)) return false;
+    const char* all = buffered_.data() + used_ + 4;
+    m.kind = kind;
+    std::memcpy(&m.id, all + 1, 4);
+    m.body.assign(all + 5, length - 5);
+    used_ += 4 + length;
+    return true;
+}
+
+uint32_t Peer::addCallback(Handler h, long long particles) {
+    callbacks_.push_back({std::move(h), particles});
+    return kFirstCallback + static_cast<uint32_t>(callbacks_.size() - 1);
+}
+
+void Peer::handle(const Message& m) {
+    const Handler* h = nullptr;
+    long long particles = -1;
+    if (m.id >= kFirstCallback && m.id - kFirstCallback < callbacks_.size()) {
+        h = &callbacks_[m.id - kFirstCallback].handler;
+        particles = callbacks_[m.id - kFirstCallback].particles;
+    } else if (const auto it = functions_.find(m.id); it != functions_.end()) {
+        h = &it->second;
+    }
+    if (!h) throw ProtocolError("a call of an unknown function or callback");
+    Writer out(this);
+    std::string error;
+    try {
+        Reader in(m.body, this);
+        in.particles = particles;
+        const Handler handler = *h;  // the handler may register callbacks (and so move the table)
+        handler(in, out);
+    } catch (const PeerFailure&) {
+        throw;
+    } catch (const ProtocolError&) {
+        throw;
+    } catch (const NotImplemented& e) {
+        const std::string what = e.what(), prefix = "not implemented: ";
+        error = thrown(Thrown::NotImplemented, what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+    } catch (const CallbackFailed& e) {
+        error = thrown(Thrown::Callback, e.what());
+    } catch (const std::invalid_argument& e) {
+        error = thrown(Thrown::InvalidArgument, e.what());
+    } catch (const std::out_of_range& e) {
+        error = thrown(Thrown::OutOfRange, e.what());
+    } catch (const std::domain_error& e) {
+        error = thrown(Thrown::DomainError, e.what());
+    } catch (const std::logic_error& e) {
+        error = thrown(Thrown::LogicError, e.what());
+    } catch (const std::exception& e) {
+        error = thrown(Thrown::Other, e.what());
+    } catch (...) {
+        error = thrown(Thrown::Other, "an exception that is not a std::exception");
+    }
+    if (error.empty()) send(Kind::Return, m.id, out.buffer());
+    else send(Kind::Throw, m.id, error);
+}
+
+void Peer::rethrow(const std::string& body, const char* name) {
+    if (body.empty()) throw ProtocolError("an empty exception");
+    const auto kind = static_cast<Thrown>(body[0]);
+    const std::string text = body.substr(1);
+    switch (kind) {
+        case Thrown::NotImplemented: throw NotImplemented(text);
+        case Thrown::InvalidArgument: throw std::invalid_argument(text);
+        case Thrown::OutOfRange: throw std::out_of_range(text);
+        case Thrown::DomainError: throw std::domain_error(text);
+        case Thrown::LogicError: throw std::logic_error(text);
+        case Thrown::Callback: throw CallbackFailed(text);
+        default: throw std::runtime_error(pid_ > 0 ? std::string(name) + " threw: " + text : text);
+    }
+}
+
+std::string Peer::roundTrip(uint32_t id, const std::string& args, const char* name) {
+    if (!connected()) throw PeerFailure(std::string(name) + ": no process to call");
+    try {
+        send(Kind::Invoke, id, args);
+        for (Message m; receive(m);) {
+            if (m.kind == Kind::Return) return m.body;
+            if (m.kind == Kind::Throw) rethrow(m.body, name);
+            handle(m);
+        }
+    } catch (const ProtocolError& e) {
+        if (pid_ <= 0) throw;
+        disconnect();
+        throw PeerFailure(std::string("your code's process broke the protocol in ") + name + ": " + e.what());
+    } catch (const PeerFailure&) {
+        if (pid_ <= 0) throw;
+        // fall through: the process is gone
+    }
+    if (pid_ <= 0) throw PeerFailure("the connection ended");
+    const std::string how = disconnect();
+    throw PeerFailure(std::string("your code crashed in ") + name + (how.empty() ? "" : " (" + how + ")"));
+}
+
+void Peer::serveUntilClosed() {
+    for (Message m; receive(m);) {
+        if (m.kind != Kind::Invoke) throw ProtocolError("a reply without a call");
+        handle(m);
+    }
+}
+
+std::string Peer::disconnect() {
+    if (in_ >= 0) ::close(in_);
+    if (out_ >= 0) ::close(out_);
+    in_ = out_ = -1;
+    callbacks_.clear();
+    buffered_.clear();
+    used_ = 0;
+    std::string how;
+    if (pid_ > 0) {
+        int status = 0;
+        if (::waitpid(pid_, &status, WNOHANG) == 0) {  // still running: it broke the protocol
+            ::kill(pid_, SIGKILL);
+            ::waitpid(pid_, &status, 0);
+        } else if (WIFSIGNALED(status)) {
+            const int sig = WTERMSIG(status);
+            how = "signal " + std::to_string(sig) + ", " + ::strsignal(sig);
+        } else if (WIFEXITED(status)) {
+            how = "it called exit(" + std::to_string(WEXITSTATUS(status)) + ")";
+        }
+    }
+    pid_ = -1;
+    return how;
+}
+
+}  // namespace clothlab::remote

@@ -1,0 +1,35 @@
+// Stage 05 in the test process: each function forwards to the submission process (remote/peer.h).
+#include "remote/functions.h"
+#include "remote/peer.h"
+
+namespace clothlab {
+
+using remote::Invoke;
+using remote::submissionProcess;
+
+BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+    return Invoke<decltype(bendingGradients)>::call(submissionProcess(), remote::k_bendingGradients, "bendingGradients",
+                                                    p1, p2, p3, p4);
+}
+
+BendingCorrection projectBendingConstraint(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4, double w1,
+                                           double w2, double w3, double w4, double phi0, double k) {
+    return Invoke<decltype(projectBendingConstraint)>::call(submissionProcess(), remote::k_projectBendingConstraint,
+                                                            "projectBendingConstraint", p1, p2, p3, p4, w1, w2, w3, w4,
+                                                            phi0, k);
+}
+
+std::vector<BendingStencil> bendingStencils(const std::vector<Eigen::Vector3i>& triangles, const Matrix3X& x) {
+    std::vector<BendingStencil> stencils = Invoke<decltype(bendingStencils)>::call(
+        submissionProcess(), remote::k_bendingStencils, "bendingStencils", triangles, x);
+    // The framework indexes particles with these: an index outside 0..N-1 is refused here.
+    for (const BendingStencil& s : stencils)
+        for (int i : {s.i1, s.i2, s.i3, s.i4})
+            if (i < 0 || i >= x.cols())
+                throw std::out_of_range("bendingStencils returned a stencil with particle " + std::to_string(i) +
+                                        ", but there are " + std::to_string(x.cols()) + " (0.." +
+                                        std::to_string(x.cols() - 1) + ")");
+    return stencils;
+}
+
+}  // namespace clothlab
