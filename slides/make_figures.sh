@@ -33,8 +33,7 @@ still() {
 # bigger GNUPLOT.gp: redraw a study's plot with every font doubled, readable from the back of a
 # lecture hall (the study itself writes plots for the screen)
 bigger() {
-  perl -pi -e "s/font ',(\d+)'/'font \x27,'.(\$1*2).'\x27'/ge" "$1"
-  grep -q "font ','" "$1" || sed -i "s/^set terminal pngcairo \(.*\)$/set terminal pngcairo \1 font ',20'/" "$1"
+  perl -pi -e 's/font \x27,(\d+)\x27/"font \x27,".($1 * 2)."\x27"/ge' "$1"
   run gnuplot "$1"
 }
 # study KIND SCENE NAME PLOT [options...]: the PNG plot PLOT of a ./lab study run, fonts doubled
@@ -68,7 +67,7 @@ frame scenes/mfn_hanging.json 0.2 spring_types.png --edges \
   --set cloth.nx=7 --set cloth.ny=5 --set cloth.width=1.2 --set cloth.height=0.85
 # ch. 8: the same drape at three bending stiffnesses (PBD k of the bending constraints)
 for kb in 0.001 0.05 1; do
-  frame scenes/pbd_sphere.json 2 "bending_k$kb.png" --size 480x360 --set constraints.bending.stiffness=$kb
+  frame scenes/pbd_sphere.json 2 "bending_k$kb.png" --set constraints.bending.stiffness=$kb
 done
 # ch. 5: super-elasticity, the largest edge strain over time without and with Provot's fix
 run ./lab run scenes/mfn_hanging.json --seconds 3 --every 10 --quiet --out "$tmp/strain_plain"

@@ -34,7 +34,7 @@ std::string num(double v) {
 
 SagResult sagStudy(const std::string& scene_file, const std::vector<std::string>& overrides, const SagOptions& o) {
     SagResult r;
-    r.scene = scene_file;
+    r.scene = r.file = scene_file;
     for (const std::string& s : overrides) r.scene += " --set " + s;
     r.iterations = o.iterations;
     r.seconds = o.seconds;
@@ -93,13 +93,13 @@ std::vector<std::string> writeSag(const std::string& dir, const SagResult& r) {
     }
     written.push_back(dir + "/sag.csv");
     std::ostringstream g;
-    g << "cd '" << dir << "'\nset terminal pngcairo size 800,500 font ',11'\nset output 'sag.png'\n"
-      << "set datafile separator ','\nset logscale xy\nset grid\nset key top right noenhanced\n"
-      << "set title \"static sag after " << r.seconds << " s: " << r.scene << "\" noenhanced\n"
+    g << "cd '" << dir << "'\nset terminal pngcairo size 900,620 font ',11'\nset output 'sag.png'\n"
+      << "set datafile separator ','\nset logscale xy\nset grid\nset key below vertical noenhanced\n"
+      << "set title \"static sag after " << r.seconds << " s: " << r.file << "\" noenhanced\n"
       << "set xlabel 'solver iterations per step'\nset ylabel 'sag [m]'\nplot";
     for (size_t c = 0; c < r.series.size(); ++c)
-        g << (c ? ", \\\n    " : " ") << "'sag.csv' using 1:" << c + 2 << " with linespoints lw 2 pt " << 7 + 2 * c
-          << " title columnheader";
+        g << (c ? ", \\\n    " : " ") << "'sag.csv' using 1:" << c + 2 << " every ::1 with linespoints lw 2 pt " << 7 + 2 * c
+          << " title '" << r.series[c].label << "'";
     g << "\n";
     if (runGnuplot(dir + "/sag.gp", g.str())) written.push_back(dir + "/sag.png");
     return written;

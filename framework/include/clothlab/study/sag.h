@@ -33,7 +33,8 @@ struct SagSeries {
 
 /// The whole study.
 struct SagResult {
-    std::string scene;               ///< scene file (and overrides)
+    std::string scene;               ///< scene file and overrides (for the table)
+    std::string file;                ///< scene file (for the plot's title)
     std::vector<int> iterations;     ///< the swept iteration counts
     std::vector<SagSeries> series;   ///< PBD first, then one XPBD series per substep count
     double seconds = 0.0;            ///< T, s
