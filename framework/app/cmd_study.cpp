@@ -10,6 +10,7 @@
 #include "clothlab/core/input_error.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/study/precision.h"
+#include "clothlab/study/sag.h"
 #include "clothlab/study/stability.h"
 #include "clothlab/study/theory.h"
 #include "commands.h"
@@ -106,7 +107,7 @@ void checkRange(const char* name, double lo, double hi, int count) {
 
 void addStudyCommand(CLI::App& app, int& exit_code) {
     (void)exit_code;
-    CLI::App* study = app.add_subcommand("study", "Stability maps and error-vs-run-time studies (force-based: dt sweeps; pbd/xpbd: iterations and substeps)");
+    CLI::App* study = app.add_subcommand("study", "Stability maps, error-vs-run-time studies (force-based: dt sweeps; pbd/xpbd: iterations and substeps), PBD-vs-XPBD sag");
     study->require_subcommand(1);
 
     // ---- study stability ----------------------------------------------------------------------
@@ -229,6 +230,36 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         writePrecisionCsv(out + "/precision.csv", r);
         std::cout << "wrote " << out << "/precision.csv\n";
         for (const std::string& png : plotPrecision(std::filesystem::absolute(out).string(), r)) std::cout << "wrote " << png << "\n";
+    });
+
+    // ---- study sag (sag.h) ---------------------------------------------------------------------
+    struct SagCli {
+        std::string scene, out, iterations = "1,2,5,10,20,50,100", substeps = "1,10";
+        std::vector<std::string> sets;
+        double compliance = 0.01, seconds = 3.0;
+    };
+    auto ga = std::make_shared<SagCli>();
+    CLI::App* sg = study->add_subcommand("sag", "Static sag of a hanging cloth against the iterations, PBD vs XPBD; CSV, PNG, table");
+    sg->add_option("scene", ga->scene, "Scene file (JSON) with a hanging pbd/xpbd cloth, e.g. scenes/pbd_curtain.json")->required();
+    sg->add_option("--set", ga->sets, "Override a scene field (repeatable)");
+    sg->add_option("--iterations", ga->iterations, "Comma-separated solver iterations to sweep");
+    sg->add_option("--compliance", ga->compliance, "XPBD compliance of the distance constraints, m/N")->check(CLI::NonNegativeNumber);
+    sg->add_option("--xpbd-substeps", ga->substeps, "Comma-separated substep counts, one XPBD series each");
+    sg->add_option("--seconds", ga->seconds, "Simulated time before the sag is measured, s")->check(CLI::PositiveNumber);
+    sg->add_option("--out", ga->out, "Output folder (default: out/study/<scene>-sag)");
+    sg->callback([ga] {
+        SagOptions o;
+        o.iterations = splitInts(ga->iterations, "--iterations");
+        o.xpbd_substeps = splitInts(ga->substeps, "--xpbd-substeps");
+        o.compliance = ga->compliance;
+        o.seconds = ga->seconds;
+        if (!isPositionBased(loadScene(ga->scene, ga->sets).solver.method))
+            throw InputError(ga->scene, "solver.method", "the sag study needs a pbd or xpbd scene");
+        const std::string out = ga->out.empty() ? defaultOut(ga->scene, "sag") : ga->out;
+        std::filesystem::create_directories(out);
+        const SagResult r = sagStudy(ga->scene, ga->sets, o);
+        printSagTable(std::cout, r);
+        for (const std::string& f : writeSag(std::filesystem::absolute(out).string(), r)) std::cout << "wrote " << f << "\n";
     });
 }
 

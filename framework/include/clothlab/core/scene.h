@@ -129,7 +129,7 @@ struct ForcesSpec {
     Vec3 gravity{0, -9.81, 0};  ///< gravitational acceleration g, m/s²
     double air_damping = 0.0;   ///< air damping c of the force-based methods: force −c v_i on every particle, N s/m
     Vec3 wind{0, 0, 0};         ///< wind velocity, m/s (zero: no wind pass)
-    double drag = 1.0;          ///< wind drag coefficient, N s/m² (force per unit area and unit relative velocity)
+    double drag = 1.0;          ///< wind drag coefficient, N s/m³ (force per unit area and unit relative velocity: f = drag · A · v_rel)
 };
 
 /// Settings only the position-based methods use.

@@ -9,8 +9,9 @@
 ///   spring k: \f$ k < 4m/\Delta t^2 \f$);
 /// - RK4: bounded (slowly damped) iff \f$ \omega\Delta t < 2\sqrt2 \f$;
 /// - implicit (backward) Euler: amplitude × \f$ 1/\sqrt{1+\omega^2\Delta t^2} \f$ — stable for every Δt.
-/// Provot (1995) estimates the critical stiffness from the natural period \f$ T_0 = 2\pi\sqrt{m/k} \f$:
-/// the step must stay below \f$ T_0/2 = \pi\sqrt{m/k} \f$, i.e. \f$ k_{krit} \approx m\,\pi^2/\Delta t^2 \f$.
+/// Provot (1995) estimates the critical stiffness from the natural period \f$ 2\pi\sqrt{m/k} \f$ of one
+/// particle on one spring: the step must stay below half of it, \f$ T_0 \approx \pi\sqrt{m/k} \f$ (the T0
+/// of the course slides and docs/mfn.md), i.e. \f$ k_{krit} \approx m\,\pi^2/\Delta t^2 \f$.
 /// (The course slides print \f$ m\,\Delta t^2/\pi^2 \f$ — upside down: a smaller step allows a stiffer
 /// spring, not a softer one.) The whole system is limited by its fastest mode, \f$ \omega_{max} \f$.
 #pragma once
