@@ -169,7 +169,7 @@ std::string Peer::roundTrip(uint32_t id, const std::string& args, const char* na
         // fall through: the process is gone
     }
     if (pid_ <= 0) throw PeerFailure("the connection ended");
-    const std::string how = disconnect();
+    const std::string how = disconnect(true);
     throw PeerFailure(std::string("your code crashed in ") + name + (how.empty() ? "" : " (" + how + ")"));
 }
 
@@ -180,7 +180,7 @@ void Peer::serveUntilClosed() {
     }
 }
 
-std::string Peer::disconnect() {
+std::string Peer::disconnect(bool ended) {
     if (in_ >= 0) ::close(in_);
     if (out_ >= 0) ::close(out_);
     in_ = out_ = -1;
@@ -189,8 +189,11 @@ std::string Peer::disconnect() {
     used_ = 0;
     std::string how;
     if (pid_ > 0) {
+        // A process that closed its pipes is ending: give it a moment to be reaped with its status.
         int status = 0;
-        if (::waitpid(pid_, &status, WNOHANG) == 0) {  // still running: it broke the protocol
+        pid_t done = 0;
+        for (int i = 0; i < (ended ? 200 : 0) && (done = ::waitpid(pid_, &status, WNOHANG)) == 0; ++i) ::usleep(5000);
+        if (done == 0) {  // still running: it broke the protocol, or closed its pipes and went on
             ::kill(pid_, SIGKILL);
             ::waitpid(pid_, &status, 0);
         } else if (WIFSIGNALED(status)) {

@@ -62,7 +62,8 @@ public:
     bool connected() const { return in_ >= 0; }
     void attach(int in_fd, int out_fd, pid_t pid) { in_ = in_fd; out_ = out_fd; pid_ = pid; }
     /// Closes the connection, kills the process, and says how it ended ("" if it was still running).
-    std::string disconnect();
+    /// `ended`: it closed the connection, so wait up to a second for it to end on its own.
+    std::string disconnect(bool ended = false);
 
 private:
     enum class Kind : uint8_t { Invoke = 1, Return = 2, Throw = 3 };

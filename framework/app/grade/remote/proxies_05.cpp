@@ -23,12 +23,17 @@ std::vector<BendingStencil> bendingStencils(const std::vector<Eigen::Vector3i>& 
     std::vector<BendingStencil> stencils = Invoke<decltype(bendingStencils)>::call(
         submissionProcess(), remote::k_bendingStencils, "bendingStencils", triangles, x);
     // The framework indexes particles with these: an index outside 0..N-1 is refused here.
-    for (const BendingStencil& s : stencils)
-        for (int i : {s.i1, s.i2, s.i3, s.i4})
-            if (i < 0 || i >= x.cols())
-                throw std::out_of_range("bendingStencils returned a stencil with particle " + std::to_string(i) +
-                                        ", but there are " + std::to_string(x.cols()) + " (0.." +
-                                        std::to_string(x.cols() - 1) + ")");
+    const auto check = [&](int particle) {
+        if (particle < 0 || particle >= x.cols())
+            throw std::out_of_range("bendingStencils returned a stencil with particle " + std::to_string(particle) +
+                                    ", but there are " + std::to_string(x.cols()) + " (0.." + std::to_string(x.cols() - 1) + ")");
+    };
+    for (const BendingStencil& stencil : stencils) {
+        check(stencil.i1);
+        check(stencil.i2);
+        check(stencil.i3);
+        check(stencil.i4);
+    }
     return stencils;
 }
 
