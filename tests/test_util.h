@@ -62,8 +62,21 @@ inline testing::AssertionResult closeFormat(const char* actual_expr, const char*
                                        << num(tolerance) << " (off by " << num(diff) << ").";
 }
 
+/// EXPECT_DOUBLE_EQ's check (equal up to 4 units in the last place) with both numbers printed only as
+/// precisely as needed to tell them apart (0.3, not 0.29999999999999999). Use through EXPECT_SAME_DOUBLE.
+inline testing::AssertionResult sameDoubleFormat(const char* actual_expr, const char* expected_expr, double actual, double expected) {
+    using FP = testing::internal::FloatingPoint<double>;
+    if (FP(actual).AlmostEquals(FP(expected))) return testing::AssertionSuccess();
+    const auto [a, e] = numPair(actual, expected);
+    return testing::AssertionFailure() << actual_expr << " = " << a << ", expected " << expected_expr << " = " << e
+                                       << " (equal up to rounding).";
+}
+
 }  // namespace clothlab::testing_util
 
+/// EXPECT_DOUBLE_EQ with numbers as short as they can be (testing_util::sameDoubleFormat).
+#define EXPECT_SAME_DOUBLE(actual, expected) \
+    EXPECT_PRED_FORMAT2(::clothlab::testing_util::sameDoubleFormat, actual, expected)
 /// EXPECT_NEAR with numbers in 6 significant digits (testing_util::closeFormat).
 #define EXPECT_CLOSE(actual, expected, tolerance) \
     EXPECT_PRED_FORMAT3(::clothlab::testing_util::closeFormat, actual, expected, tolerance)
