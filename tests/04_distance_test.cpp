@@ -24,11 +24,11 @@ const Vec3 kP1(0.3, -0.2, 0.5), kP2(1.1, 0.4, -0.1);  // |p1 - p2| = sqrt(0.64+0
 
 // ---- Task 4.1 --------------------------------------------------------------------------
 TEST(Task4_1_DistanceConstraint, IsLengthMinusRestLength) {
-    EXPECT_NEAR(distanceConstraint(kP1, kP2, 1.0), std::sqrt(1.36) - 1.0, 1e-12)
+    EXPECT_CLOSE(distanceConstraint(kP1, kP2, 1.0), std::sqrt(1.36) - 1.0, 1e-12)
         << "C(p1, p2) must be |p1 - p2| - d (positive when stretched)";
-    EXPECT_NEAR(distanceConstraint(kP1, kP2, 2.0), std::sqrt(1.36) - 2.0, 1e-12)
+    EXPECT_CLOSE(distanceConstraint(kP1, kP2, 2.0), std::sqrt(1.36) - 2.0, 1e-12)
         << "C must be negative when the constraint is compressed (|p1 - p2| < d)";
-    EXPECT_NEAR(distanceConstraint(kP2, kP1, 1.0), std::sqrt(1.36) - 1.0, 1e-12) << "C is symmetric in p1, p2";
+    EXPECT_CLOSE(distanceConstraint(kP2, kP1, 1.0), std::sqrt(1.36) - 1.0, 1e-12) << "C is symmetric in p1, p2";
 }
 
 // ---- Task 4.2 --------------------------------------------------------------------------
@@ -40,11 +40,11 @@ TEST(Task4_2_DistanceGradient, AgreesWithFiniteDifferencesOfC) {
         e[a] = h;
         const double fd1 = (C(kP1 + e, kP2, d) - C(kP1 - e, kP2, d)) / (2 * h);
         const double fd2 = (C(kP1, kP2 + e, d) - C(kP1, kP2 - e, d)) / (2 * h);
-        EXPECT_NEAR(g[a], fd1, 1e-7) << "component " << a << " of grad_p1 C: yours " << str(g)
+        EXPECT_CLOSE(g[a], fd1, 1e-7) << "component " << a << " of grad_p1 C: yours " << str(g)
                                      << ", finite differences say " << fd1;
-        EXPECT_NEAR(-g[a], fd2, 1e-7) << "grad_p2 C = -grad_p1 C must match finite differences (component " << a << ")";
+        EXPECT_CLOSE(-g[a], fd2, 1e-7) << "grad_p2 C = -grad_p1 C must match finite differences (component " << a << ")";
     }
-    EXPECT_NEAR(g.norm(), 1.0, 1e-12) << "the gradient of a distance is a unit vector";
+    EXPECT_CLOSE(g.norm(), 1.0, 1e-12) << "the gradient of a distance is a unit vector";
 }
 
 TEST(Task4_2_DistanceGradient, CoincidentPointsGiveZeroNotNaN) {
@@ -57,7 +57,7 @@ TEST(Task4_2_DistanceGradient, CoincidentPointsGiveZeroNotNaN) {
 TEST(Task4_3_ProjectDistance, StiffnessOneSatisfiesTheConstraintExactly) {
     for (double d : {0.2, 1.0, 1.16619, 3.0}) {
         const auto c = projectDistanceConstraint(kP1, kP2, 2.0, 0.5, d, 1.0);
-        EXPECT_NEAR(C(kP1 + c.dp1, kP2 + c.dp2, d), 0.0, 1e-12)
+        EXPECT_CLOSE(C(kP1 + c.dp1, kP2 + c.dp2, d), 0.0, 1e-12)
             << "after one projection with k = 1, |p1 - p2| must equal d = " << d;
     }
 }
@@ -76,23 +76,23 @@ TEST(Task4_3_ProjectDistance, ConservesMomentum) {
     const Vec3 momentum = c.dp1 / w1 + c.dp2 / w2;
     EXPECT_LT(momentum.norm(), 1e-12) << "sum m_i dp_i = " << str(momentum)
                                       << " must be zero: weight the corrections with w_i / (w1 + w2)";
-    EXPECT_NEAR(c.dp1.norm() / c.dp2.norm(), w1 / w2, 1e-9) << "|dp1| / |dp2| must be w1 / w2 (light particles move more)";
+    EXPECT_CLOSE(c.dp1.norm() / c.dp2.norm(), w1 / w2, 1e-9) << "|dp1| / |dp2| must be w1 / w2 (light particles move more)";
 }
 
 TEST(Task4_3_ProjectDistance, StiffnessScalesTheCorrection) {
     const double d = 0.5, k = 0.3;
     const auto c = projectDistanceConstraint(kP1, kP2, 1.0, 1.0, d, k);
     const double before = C(kP1, kP2, d), after = C(kP1 + c.dp1, kP2 + c.dp2, d);
-    EXPECT_NEAR(after, (1.0 - k) * before, 1e-12) << "stiffness k must remove the fraction k of the error C";
+    EXPECT_CLOSE(after, (1.0 - k) * before, 1e-12) << "stiffness k must remove the fraction k of the error C";
 }
 
 TEST(Task4_3_ProjectDistance, OnePinnedEndpointTheOtherMovesAllTheWay) {
     const auto c = projectDistanceConstraint(kP1, kP2, 0.0, 2.0, 0.5, 1.0);
     EXPECT_EQ(c.dp1.norm(), 0.0) << "p1 is pinned (w1 = 0) and must not move";
-    EXPECT_NEAR(C(kP1, kP2 + c.dp2, 0.5), 0.0, 1e-12) << "with p1 pinned, p2 must move the whole way";
+    EXPECT_CLOSE(C(kP1, kP2 + c.dp2, 0.5), 0.0, 1e-12) << "with p1 pinned, p2 must move the whole way";
     const auto c2 = projectDistanceConstraint(kP1, kP2, 3.0, 0.0, 2.0, 1.0);
     EXPECT_EQ(c2.dp2.norm(), 0.0) << "p2 is pinned (w2 = 0) and must not move";
-    EXPECT_NEAR(C(kP1 + c2.dp1, kP2, 2.0), 0.0, 1e-12) << "with p2 pinned, p1 must move the whole way";
+    EXPECT_CLOSE(C(kP1 + c2.dp1, kP2, 2.0), 0.0, 1e-12) << "with p2 pinned, p1 must move the whole way";
 }
 
 TEST(Task4_3_ProjectDistance, BothPinnedNoMoveNoNaN) {
@@ -243,3 +243,38 @@ TEST(Task4_3_ProjectDistance, NearlyCoincidentPointsArePushedApart) {
         return testing::AssertionSuccess();
     });
 }
+
+// The experiments are compiled into the graded binaries once the grader gives their tests the
+// submission's answers.json (CLOTHLAB_WITH_EXPERIMENTS; until then: the experiments_NN binaries of
+// tests/CMakeLists.txt, and their points wait under "experiments" in the points file).
+#ifdef CLOTHLAB_WITH_EXPERIMENTS
+// ================================ Experiments (answers.json) ==================================
+// What the stiffness k of the distance constraint does: the largest edge strain of the curtain
+// (scenes/pbd_curtain.json, 10 iterations) after 3 s at k = 1 and k = 0.9, from `./lab run ... --quiet`
+// (max_strain), entered in exercises/04_distance/answers.json. The test runs the same scene with your
+// distance constraint and grades your number against that run (3 %); a softer constraint stretches more.
+#include "experiment_scenes.h"
+
+namespace {
+double curtainStrain(const char* stiffness) {
+    return testing_util::finalMetric(kScene_pbd_curtain, "scenes/pbd_curtain.json",
+                                     {std::string("constraints.distance.stiffness=") + stiffness}, "max_strain");
+}
+}  // namespace
+
+TEST(Experiments, CurtainStrainAtStiffness1) {
+    const double own = curtainStrain("1.0");
+    EXPECT_TRUE(testing_util::gradeAnswer("04_distance", "max_strain_stiffness_1", own, 0.03 * std::abs(own),
+                                          "max_strain of pbd_curtain after 3 s at distance stiffness k = 1, a fraction (1)",
+                                          "your distance constraint, run here on the same scene, ends at this strain (3 %)"));
+}
+
+TEST(Experiments, CurtainStrainAtStiffness0_9) {
+    const double stiff = curtainStrain("1.0"), own = curtainStrain("0.9");
+    EXPECT_GT(own, stiff) << "a softer constraint (k = 0.9) must let the curtain stretch more than k = 1: max_strain "
+                          << testing_util::num(own) << " at k = 0.9, " << testing_util::num(stiff) << " at k = 1";
+    EXPECT_TRUE(testing_util::gradeAnswer("04_distance", "max_strain_stiffness_0_9", own, 0.03 * std::abs(own),
+                                          "max_strain of pbd_curtain after 3 s at distance stiffness k = 0.9, a fraction (1)",
+                                          "your distance constraint, run here on the same scene, ends at this strain (3 %)"));
+}
+#endif  // CLOTHLAB_WITH_EXPERIMENTS

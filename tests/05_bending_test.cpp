@@ -54,7 +54,7 @@ TEST(Task5_1_BendingGradients, DIsTheCosineOfTheDihedralAngle) {
         const Stencil s = hinge(open, 0.1);
         const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
         EXPECT_TRUE(g.valid) << "a proper stencil must be valid";
-        EXPECT_NEAR(g.d, dOf(s.p[0], s.p[1], s.p[2], s.p[3]), 1e-12)
+        EXPECT_CLOSE(g.d, dOf(s.p[0], s.p[1], s.p[2], s.p[3]), 1e-12)
             << "d must be n1.n2 with n1 = p2 x p3 / |p2 x p3|, n2 = p2 x p4 / |p2 x p4| (relative to p1)";
     }
 }
@@ -73,7 +73,7 @@ TEST(Task5_1_BendingGradients, QVectorsAreFiniteDifferenceGradientsOfD) {
                 minus.p[i][a] -= h;
                 const double fd = (dOf(plus.p[0], plus.p[1], plus.p[2], plus.p[3]) -
                                    dOf(minus.p[0], minus.p[1], minus.p[2], minus.p[3])) / (2 * h);
-                EXPECT_NEAR(q[i][a], fd, 1e-6) << "q" << i + 1 << " = " << str(q[i]) << " at opening angle " << open
+                EXPECT_CLOSE(q[i][a], fd, 1e-6) << "q" << i + 1 << " = " << str(q[i]) << " at opening angle " << open
                                                << ": component " << a << " should be dd/dp = " << fd;
             }
     }
@@ -86,13 +86,13 @@ TEST(Task5_1_BendingGradients, SinPhiIsAccurateAlsoNearFlat) {
     for (double open : {0.3, 1.0, 2.0, 2.9}) {
         const Stencil s = hinge(open, 0.1);
         const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
-        EXPECT_NEAR(g.sinPhi, std::sin(open), 1e-12) << "sinPhi must be |n1 x n2| = sin(phi), at phi = " << open;
+        EXPECT_CLOSE(g.sinPhi, std::sin(open), 1e-12) << "sinPhi must be |n1 x n2| = sin(phi), at phi = " << open;
     }
     for (double flatness : {1e-3, 1e-5, 2e-6}) {
         const double open = kPi - flatness;
         const Stencil s = hinge(open, -0.2);
         const auto g = bendingGradients(s.p[0], s.p[1], s.p[2], s.p[3]);
-        EXPECT_NEAR(g.sinPhi, std::sin(open), 1e-8 * std::sin(open))
+        EXPECT_CLOSE(g.sinPhi, std::sin(open), 1e-8 * std::sin(open))
             << "phi = pi - " << flatness << ": sinPhi has a relative error of " << g.sinPhi / std::sin(open) - 1
             << " (compute it as |n1 x n2|: sqrt(1 - d^2) loses digits near flat, see the header)";
     }
@@ -151,7 +151,7 @@ TEST(Task5_2_ProjectBending, NearlyFlatStencilFarFromItsRestAngle) {
         const Stencil s = hinge(open, 0.1);
         const auto c = projectBendingConstraint(s.p[0], s.p[1], s.p[2], s.p[3], 0, 0, 0, 1, phi0, 1.0);
         const double expected = std::abs(open - phi0) * h4;
-        EXPECT_NEAR(c.dp4.norm(), expected, 1e-8 * expected)
+        EXPECT_CLOSE(c.dp4.norm(), expected, 1e-8 * expected)
             << "phi = pi - " << flatness << ", rest angle pi - 0.5: |dp4| = " << c.dp4.norm() << " m, relative error "
             << c.dp4.norm() / expected - 1 << " (sin(phi) as sqrt(1 - d^2) loses digits near flat, see the header)";
         EXPECT_LT(std::abs(angleAfter(s, c) - phi0), 0.5 * std::abs(open - phi0)) << "the crease must close";
@@ -232,7 +232,7 @@ TEST(Task5_3_BendingStencils, OneStencilPerInteriorEdge) {
         }
         EXPECT_EQ(found, 2) << "stencil (" << s.i1 << ", " << s.i2 << ", " << s.i3 << ", " << s.i4
                             << "): i3 and i4 must be the vertices opposite the edge i1-i2 in its two triangles";
-        EXPECT_NEAR(s.phi0, kPi, 1e-6) << "a flat cloth has rest angle pi (d = -1 with this convention)";
+        EXPECT_CLOSE(s.phi0, kPi, 1e-6) << "a flat cloth has rest angle pi (d = -1 with this convention)";
     }
 }
 
@@ -246,7 +246,7 @@ TEST(Task5_3_BendingStencils, RestAnglesComeFromTheInitialShape) {
     const std::vector<Eigen::Vector3i> tris = {Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 0, 3)};
     const auto st = bendingStencils(tris, x);
     ASSERT_EQ(st.size(), 1u) << "two triangles sharing one edge give one stencil";
-    EXPECT_NEAR(st[0].phi0, angleOf(x.col(0), x.col(1), x.col(2), x.col(3)), 1e-12)
+    EXPECT_CLOSE(st[0].phi0, angleOf(x.col(0), x.col(1), x.col(2), x.col(3)), 1e-12)
         << "phi0 must be arccos(n1.n2) of the initial positions (here pi/2)";
 }
 
@@ -446,3 +446,41 @@ TEST(Task5_2_ProjectBending, RandomStencilsMassesAndScales) {
         return testing::AssertionSuccess();
     });
 }
+
+// The experiments are compiled into the graded binaries once the grader gives their tests the
+// submission's answers.json (CLOTHLAB_WITH_EXPERIMENTS; until then: the experiments_NN binaries of
+// tests/CMakeLists.txt, and their points wait under "experiments" in the points file).
+#ifdef CLOTHLAB_WITH_EXPERIMENTS
+// ================================ Experiments (answers.json) ==================================
+// What the bending stiffness does: the flag of scenes/pbd_flag.json laid horizontal, without wind, held
+// along its left edge, droops under gravity like a cantilever; its RMS bending-angle error after 0.5 s
+// (50 steps) at bending stiffness 0.02 (the scene's) and 1, from `./lab run ... --quiet`
+// (rms_bending_error, rad), entered in exercises/05_bending/answers.json. The test runs the same scene
+// with your bending constraint and grades your number against that run (5 %); a stiffer constraint bends less.
+#include "experiment_scenes.h"
+
+namespace {
+double droopBendingError(const char* stiffness) {
+    return testing_util::finalMetric(kScene_pbd_flag, "scenes/pbd_flag.json",
+                                     {"forces.wind=[0,0,0]", "cloth.orientation=horizontal", "solver.steps=50",
+                                      std::string("constraints.bending.stiffness=") + stiffness},
+                                     "rms_bending_error");
+}
+}  // namespace
+
+TEST(Experiments, BendingErrorAtStiffness0_02) {
+    const double own = droopBendingError("0.02");
+    EXPECT_TRUE(testing_util::gradeAnswer("05_bending", "rms_bending_error_stiffness_0_02", own, 0.05 * std::abs(own),
+                                          "rms_bending_error of the drooping flag after 0.5 s at bending stiffness 0.02, rad",
+                                          "your bending constraint, run here on the same scene, ends at this error (5 %)"));
+}
+
+TEST(Experiments, BendingErrorAtStiffness1) {
+    const double soft = droopBendingError("0.02"), own = droopBendingError("1.0");
+    EXPECT_LT(own, soft) << "a stiffer bending constraint (1) must keep the dihedral angles nearer their rest values than 0.02: "
+                         << "rms_bending_error " << testing_util::num(own) << " rad at 1, " << testing_util::num(soft) << " rad at 0.02";
+    EXPECT_TRUE(testing_util::gradeAnswer("05_bending", "rms_bending_error_stiffness_1", own, 0.05 * std::abs(own),
+                                          "rms_bending_error of the drooping flag after 0.5 s at bending stiffness 1, rad",
+                                          "your bending constraint, run here on the same scene, ends at this error (5 %)"));
+}
+#endif  // CLOTHLAB_WITH_EXPERIMENTS

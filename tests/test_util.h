@@ -2,15 +2,20 @@
 #pragma once
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <Eigen/Geometry>
 
 #include "clothlab/core/types.h"
+#include "clothlab/io/scene_json.h"
+#include "clothlab/sim/run.h"
 
 namespace clothlab::testing_util {
 
@@ -20,6 +25,136 @@ inline std::string str(const Vec3& v) {
     s.precision(10);
     s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
     return s.str();
+}
+
+// ---- Numbers in messages --------------------------------------------------------------------------
+
+/// A number with 6 significant digits ("0.3", not "0.29999999999999999").
+inline std::string num(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+/// Two numbers that are compared: 6 significant digits, or more until they print differently
+/// (so "expected 1, got 1" never appears for 1 and 1.0000001).
+inline std::pair<std::string, std::string> numPair(double a, double b) {
+    for (int p = 6; p <= 17; ++p) {
+        std::ostringstream x, y;
+        x.precision(p), y.precision(p);
+        x << a, y << b;
+        if (x.str() != y.str() || a == b || p == 17) return {x.str(), y.str()};
+    }
+    return {num(a), num(b)};
+}
+
+/// EXPECT_NEAR's check (|actual - expected| <= tolerance) with a message in 6 significant digits that
+/// names both expressions: "speed = 9.81, expected a * T = 9.7 within 0.01 (off by 0.11)". Use through
+/// EXPECT_CLOSE / ASSERT_CLOSE; stream the physical explanation after it as with EXPECT_NEAR.
+inline testing::AssertionResult closeFormat(const char* actual_expr, const char* expected_expr, const char* tol_expr, double actual,
+                                            double expected, double tolerance) {
+    const double diff = std::abs(actual - expected);
+    if (diff <= tolerance) return testing::AssertionSuccess();
+    (void)tol_expr;
+    const auto [a, e] = numPair(actual, expected);
+    return testing::AssertionFailure() << actual_expr << " = " << a << ", expected " << expected_expr << " = " << e << " within "
+                                       << num(tolerance) << " (off by " << num(diff) << ").";
+}
+
+/// EXPECT_DOUBLE_EQ's check (equal up to 4 units in the last place) with both numbers printed only as
+/// precisely as needed to tell them apart (0.3, not 0.29999999999999999). Use through EXPECT_SAME_DOUBLE.
+inline testing::AssertionResult sameDoubleFormat(const char* actual_expr, const char* expected_expr, double actual, double expected) {
+    using FP = testing::internal::FloatingPoint<double>;
+    if (FP(actual).AlmostEquals(FP(expected))) return testing::AssertionSuccess();
+    const auto [a, e] = numPair(actual, expected);
+    return testing::AssertionFailure() << actual_expr << " = " << a << ", expected " << expected_expr << " = " << e
+                                       << " (equal up to rounding).";
+}
+
+}  // namespace clothlab::testing_util
+
+/// EXPECT_DOUBLE_EQ with numbers as short as they can be (testing_util::sameDoubleFormat).
+#define EXPECT_SAME_DOUBLE(actual, expected) \
+    EXPECT_PRED_FORMAT2(::clothlab::testing_util::sameDoubleFormat, actual, expected)
+/// EXPECT_NEAR with numbers in 6 significant digits (testing_util::closeFormat).
+#define EXPECT_CLOSE(actual, expected, tolerance) \
+    EXPECT_PRED_FORMAT3(::clothlab::testing_util::closeFormat, actual, expected, tolerance)
+/// ASSERT_NEAR with numbers in 6 significant digits (testing_util::closeFormat).
+#define ASSERT_CLOSE(actual, expected, tolerance) \
+    ASSERT_PRED_FORMAT3(::clothlab::testing_util::closeFormat, actual, expected, tolerance)
+
+namespace clothlab::testing_util {
+
+// ---- Graded experiments: the student's answers.json ------------------------------------------------
+// Each stage ends with measurements the student enters in exercises/NN_name/answers.json
+// ({"field": {"value": <number or null>, "how": "<the command>"}, ...}). The test computes what physics
+// expects (a formula, or a run of the student's own code) and grades the number within a stated tolerance.
+
+#ifndef CLOTHLAB_ANSWERS_DEFAULT_DIR
+#define CLOTHLAB_ANSWERS_DEFAULT_DIR "exercises"
+#endif
+
+/// The answers file of a stage: $CLOTHLAB_ANSWERS_DIR/answers.json when that variable is set (the
+/// grader copies the submission's file into its sandbox and sets it), else the compile-time default
+/// CLOTHLAB_ANSWERS_DEFAULT_DIR/<stageDir>/answers.json (tests/CMakeLists.txt: solutions/ when the
+/// stage is built from the reference, else exercises/).
+/// @param stageDir  the stage's folder name, e.g. "01_hooke"
+inline std::string answersPath(const char* stageDir) {
+    if (const char* dir = std::getenv("CLOTHLAB_ANSWERS_DIR"); dir && *dir) return std::string(dir) + "/answers.json";
+    return std::string(CLOTHLAB_ANSWERS_DEFAULT_DIR) + "/" + stageDir + "/answers.json";
+}
+
+/// Reads the number the student entered for `field` from answersPath(stageDir) into *value. A missing
+/// or unreadable file, malformed JSON, a missing field or a null (not measured yet) is a failure whose
+/// message names the file and the field; nothing throws.
+inline testing::AssertionResult readAnswer(const char* stageDir, const std::string& field, double* value) {
+    const std::string path = answersPath(stageDir);
+    std::ifstream in(path);
+    if (!in)
+        return testing::AssertionFailure() << path << ": cannot read the answers file (exercises/" << stageDir
+                                           << "/answers.json in your copy; the task sheet's \"Experiments\" says what to measure)";
+    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (doc.is_discarded()) return testing::AssertionFailure() << path << ": not valid JSON (check commas, quotes and brackets)";
+    if (!doc.is_object() || !doc.contains(field))
+        return testing::AssertionFailure() << path << ": " << field << ": missing (keep the file's fields as shipped)";
+    const nlohmann::json& entry = doc[field];
+    const nlohmann::json& v = entry.is_object() ? (entry.contains("value") ? entry["value"] : nlohmann::json()) : entry;
+    if (v.is_null())
+        return testing::AssertionFailure() << path << ": " << field << ".value: null, not measured yet"
+                                           << (entry.is_object() && entry.contains("how") && entry["how"].is_string()
+                                                   ? " (how: " + entry["how"].get<std::string>() + ")"
+                                                   : std::string());
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+        return testing::AssertionFailure() << path << ": " << field << ".value: expected a number (got " << v.dump() << ")";
+    *value = v.get<double>();
+    return testing::AssertionSuccess();
+}
+
+/// The final value of metric `name` after a run of a scene as `./lab run SCENE --set ... --quiet` prints it
+/// in its summary: solver.steps steps of the scene (its JSON text, e.g. kScene_pbd_curtain from
+/// experiment_scenes.h) with the overrides, through whichever code this binary links for each stage.
+inline double finalMetric(const char* sceneText, const std::string& file, const std::vector<std::string>& sets, const std::string& name) {
+    const Scene scene = parseScene(sceneText, file, sets);
+    auto sim = makeSimulation(scene);
+    const RunResult r = runSimulation(*sim, scene.solver.steps, scene.solver.steps);
+    if (r.unstable) return std::nan("");
+    for (const Metric& m : sim->metrics())
+        if (m.name == name) return m.value;
+    return std::nan("");
+}
+
+/// Grades one measured number: the answer in `field` must lie within `tolerance` of `expected`.
+/// `what` names the quantity and its unit, `why` says where the expected value comes from.
+inline testing::AssertionResult gradeAnswer(const char* stageDir, const std::string& field, double expected, double tolerance,
+                                            const std::string& what, const std::string& why) {
+    double answer = 0;
+    const testing::AssertionResult read = readAnswer(stageDir, field, &answer);
+    if (!read) return read;
+    if (std::abs(answer - expected) <= tolerance) return testing::AssertionSuccess();
+    const auto [a, e] = numPair(answer, expected);
+    return testing::AssertionFailure() << answersPath(stageDir) << ": " << field << " (" << what << "): you entered " << a
+                                       << ", physics expects " << e << " within " << num(tolerance) << ": " << why;
 }
 
 // ---- Randomised property tests ----------------------------------------------------------------

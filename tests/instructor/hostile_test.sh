@@ -61,7 +61,7 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
     ref_row+=",$p"
     if printf '%s\n' "${stage_of[@]}" | grep -qx "${H0[$i]}"; then  # a graded stage: the reference keeps full points
       pf=$(ls "$root"/tests/"${H0[$i]}"_*.points.json)
-      want=$(grep -oE '"[A-Za-z0-9_]+\.[A-Za-z0-9_]+": *[0-9.]+' "$pf" | awk -F: '{t += $2} END {print t}')
+      want=$(jq '[.tests[]] | add' "$pf")  # the graded tests' points (not "experiments": not graded yet)
       [[ $p == "$want" ]] || fail "the reference scores $p of $want on stage ${H0[$i]}"
     fi
   done

@@ -1,5 +1,7 @@
 #include "clothlab/core/grid.h"
 
+#include <cmath>
+
 namespace clothlab {
 
 State makeGridState(const ClothSpec& spec) {
@@ -7,10 +9,13 @@ State makeGridState(const ClothSpec& spec) {
     s.resize(spec.nx * spec.ny);
     const double dx = spec.width / (spec.nx - 1), dy = spec.height / (spec.ny - 1);
     const double w = spec.nx * spec.ny / spec.mass;  // 1 / m_i
+    // Direction of growing rows: -y (vertical) or +z (horizontal), turned by `tilt` about the x axis.
+    const double phi = (spec.horizontal ? 90.0 - spec.tilt : spec.tilt) * 3.14159265358979323846 / 180.0;
+    const Vec3 down = spec.tilt == 0.0 ? (spec.horizontal ? Vec3(0, 0, 1) : Vec3(0, -1, 0)) : Vec3(0, -std::cos(phi), std::sin(phi));
     for (int r = 0; r < spec.ny; ++r)
         for (int c = 0; c < spec.nx; ++c) {
             const int i = gridIndex(c, r, spec.nx);
-            s.x.col(i) = spec.origin + (spec.horizontal ? Vec3(c * dx, 0, r * dy) : Vec3(c * dx, -r * dy, 0));
+            s.x.col(i) = spec.origin + Vec3(c * dx, 0, 0) + r * dy * down;
             s.w[i] = w;
         }
     for (int p : spec.pins) s.w[p] = 0.0;

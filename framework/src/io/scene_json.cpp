@@ -195,6 +195,7 @@ ClothSpec readCloth(Reader r) {
     c.mass = r.number("mass", c.mass, 0, INFINITY, true);
     c.origin = r.vec3("origin", c.origin);
     c.horizontal = r.choice("orientation", "vertical", {"vertical", "horizontal"}) == "horizontal";
+    c.tilt = r.number("tilt", c.tilt, -90, 90);
     c.pins = readPins(r, c);
     r.finish();
     return c;

@@ -73,6 +73,9 @@ struct ClothSpec {
     double mass = 1.0;               ///< total mass m_gesamt = Σ m_i, kg
     Vec3 origin{0, 0, 0};            ///< position of the top-left particle, m
     bool horizontal = false;         ///< false: hangs in the x-y plane; true: lies in the x-z plane
+    /// Turn about the top edge (the x axis through `origin`), degrees in [-90, 90]: a vertical cloth
+    /// swings its bottom edge towards +z, a horizontal one lowers its far edge (0: not tilted)
+    double tilt = 0.0;
     std::vector<int> pins;           ///< indices of pinned particles (w = 0)
 };
 
