@@ -511,10 +511,6 @@ TEST(Task1_5_VelocityVerlet, ConservesMomentumAndAngularMomentumWithRandomMasses
     forEachSeed([](unsigned seed) { return conservesMomenta(&velocityVerletStep, "Velocity Verlet", seed, true); });
 }
 
-// The experiments are compiled into the graded binaries once the grader gives their tests the
-// submission's answers.json (CLOTHLAB_WITH_EXPERIMENTS; until then: the experiments_NN binaries of
-// tests/CMakeLists.txt, and their points wait under "experiments" in the points file).
-#ifdef CLOTHLAB_WITH_EXPERIMENTS
 // ================================ Experiments (answers.json) ==================================
 // The numbers you measured with `./lab study precision` and entered in exercises/01_hooke/answers.json,
 // graded against theory: symplectic Euler is a first-order method (error ~ dt^1), velocity Verlet a
@@ -550,4 +546,3 @@ TEST(Experiments, VelocityVerletConvergenceOrder) {
                                           "Verlet is symmetric in time, so its local error is O(dt^3) and the global one O(dt^2): "
                                           "order 2 (± 0.15); the same study with your code gives " + testing_util::num(own)));
 }
-#endif  // CLOTHLAB_WITH_EXPERIMENTS

@@ -470,10 +470,6 @@ TEST(Task2_3_ExternalForces, GravityInAnyDirectionWithRandomMasses) {
     });
 }
 
-// The experiments are compiled into the graded binaries once the grader gives their tests the
-// submission's answers.json (CLOTHLAB_WITH_EXPERIMENTS; until then: the experiments_NN binaries of
-// tests/CMakeLists.txt, and their points wait under "experiments" in the points file).
-#ifdef CLOTHLAB_WITH_EXPERIMENTS
 // ================================ Experiments (answers.json) ==================================
 // The time step at which the soft cloth of scenes/mfn_hanging.json (structural k = 50 N/m) first blows up
 // with symplectic Euler, measured with `./lab study stability` and entered in exercises/02_mfn/answers.json.
@@ -493,4 +489,3 @@ TEST(Experiments, CriticalTimeStepOfTheSoftCloth) {
         "theory says dt_crit = 2 / omega_max with omega_max = " + testing_util::num(omega) + " rad/s (10 %); the same bisection with "
         "your code measures " + testing_util::num(own) + " s"));
 }
-#endif  // CLOTHLAB_WITH_EXPERIMENTS

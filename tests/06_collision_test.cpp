@@ -484,10 +484,6 @@ TEST(Task6_4_CollisionSteps, InclineInAnyOrientationSlidesWithTheAnalyticAcceler
     });
 }
 
-// The experiments are compiled into the graded binaries once the grader gives their tests the
-// submission's answers.json (CLOTHLAB_WITH_EXPERIMENTS; until then: the experiments_NN binaries of
-// tests/CMakeLists.txt, and their points wait under "experiments" in the points file).
-#ifdef CLOTHLAB_WITH_EXPERIMENTS
 // ================================ Experiments (answers.json) ==================================
 // The rebound height of the small cloth of scenes/pbd_bounce.json (dropped flat from H = 1 m above the
 // contact level, restitution e = 0.5), measured with `./lab run scenes/pbd_bounce.json --every 1` and
@@ -519,4 +515,3 @@ TEST(Experiments, ReboundHeightAtRestitution0_5) {
                                               testing_util::num(e * e * H) + " m (5 %); your code, run here, rises to " +
                                               (bounced ? testing_util::num(apex) + " m" : std::string("no bounce"))));
 }
-#endif  // CLOTHLAB_WITH_EXPERIMENTS

@@ -16,7 +16,7 @@ stages=(); for d in "$root"/exercises/[0-9][0-9]_*/; do stages+=("$(basename "$d
 
 declare -A max expect status
 for s in "${stages[@]}"; do
-  max[${s:0:2}]=$(jq '[.tests[]] | add' "$root/tests/$s.points.json")  # the graded tests' points (not "experiments": not graded yet)
+  max[${s:0:2}]=$(jq '[.tests[]] | add' "$root/tests/$s.points.json")  # the graded tests' points, experiments included
 done
 # expect_row NAME STATUS [NN=POINTS ...]: every other stage full points.
 expect_row() {

@@ -61,7 +61,7 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
     ref_row+=",$p"
     if printf '%s\n' "${stage_of[@]}" | grep -qx "${H0[$i]}"; then  # a graded stage: the reference keeps full points
       pf=$(ls "$root"/tests/"${H0[$i]}"_*.points.json)
-      want=$(jq '[.tests[]] | add' "$pf")  # the graded tests' points (not "experiments": not graded yet)
+      want=$(jq '[.tests[]] | add' "$pf")  # the graded tests' points, experiments included
       [[ $p == "$want" ]] || fail "the reference scores $p of $want on stage ${H0[$i]}"
     fi
   done

@@ -3,6 +3,7 @@
 //   --submission DIR   grade a student's folder (screen, sandboxed compile and tests; see submission.h)
 //   --class DIR        grade one folder or archive per student into a gradebook (class_grading.h)
 //   --stage NN=EXE     run a graded binary the build made (the suite's self-checks, with --expect)
+//   --answers NN=FILE  with --stage: the answers.json its graded experiments read
 //
 // Every test runs in its own sandboxed process (sandbox.h) and counts only when the grader saw it
 // start and pass over the private channel (graded_main.cpp). Points: tests/NN_name.points.json.
@@ -27,12 +28,13 @@ using namespace grade;
 
 int main(int argc, char** argv) {
     CLI::App app{"clothlab-grade — per-stage points from the graded tests"};
-    std::vector<std::string> stages, only;
+    std::vector<std::string> stages, only, answers;
     std::string points_dir, kit_file, submission, class_dir, out_dir, work, reference = "all";
     std::string json_out, junit_out, classroom_out, expect, message, mistake, why;
     int timeout_s = 30, jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     bool quiet = false, no_sandbox = false;
     app.add_option("--stage", stages, "NN=EXECUTABLE: run this graded binary (self-checks of the suite)");
+    app.add_option("--answers", answers, "With --stage: NN=FILE, the answers.json its graded experiments read");
     app.add_option("--kit", kit_file, "The grading kit the build wrote (build/grade-kit/kit.json)");
     app.add_option("--submission", submission, "Grade this folder (laid out like exercises/)");
     app.add_option("--class", class_dir, "Grade one folder or .zip/.tar.gz per student in this folder");
@@ -101,8 +103,12 @@ int main(int argc, char** argv) {
             if (eq == std::string::npos) die("--stage expects NN=EXECUTABLE (got " + spec + ")");
             const std::string nn = spec.substr(0, eq), exe = spec.substr(eq + 1);
             if (!fs::exists(exe)) die(exe + ": (file): no such graded binary");
+            fs::path answers_file;
+            for (const auto& a : answers)
+                if (a.rfind(nn + "=", 0) == 0) answers_file = a.substr(nn.size() + 1);
+            if (!answers_file.empty() && !fs::is_regular_file(answers_file)) die(answers_file.string() + ": (file): no such answers file");
             std::fprintf(stderr, "grading stage %s ...\n", nn.c_str());
-            results.push_back(gradeBinary(points_dir, nn, exe, timeout_s, jobs, tmp));
+            results.push_back(gradeBinary(points_dir, nn, exe, answers_file, timeout_s, jobs, tmp));
         }
         fs::remove_all(tmp);
         std::sort(results.begin(), results.end(), [](const StageResult& a, const StageResult& b) { return a.stage < b.stage; });

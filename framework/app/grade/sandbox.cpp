@@ -51,6 +51,7 @@ std::vector<std::string> bwrapArgs(const SandboxRun& run) {
     const bool root = ::geteuid() == 0;
     std::vector<std::string> a = {"bwrap", "--die-with-parent", "--new-session", "--hostname", "grader", "--clearenv",
                                   "--setenv", "PATH", "/usr/bin", "--setenv", "HOME", "/tmp", "--ro-bind", "/usr", "/usr"};
+    for (const auto& [name, value] : run.env) a.insert(a.end(), {"--setenv", name, value});
     if (root) a.insert(a.begin() + 1, {"--unshare-ipc", "--unshare-pid", "--unshare-net", "--unshare-uts", "--unshare-cgroup-try"});
     else a.insert(a.begin() + 1, {"--unshare-all", "--cap-drop", "ALL"});
     for (const char* l : {"lib", "lib64", "bin", "sbin"})
@@ -112,13 +113,33 @@ void makeWritableForSandbox(const fs::path& dir) {
     }
 }
 
+/// Without the sandbox the program sees the host's paths: a path inside a mount (at the start of an
+/// argument or after its '=') becomes the mount's host path.
+std::string outside(const std::string& arg, const std::vector<Mount>& mounts) {
+    const size_t at = arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos ? arg.find('=') + 1 : 0;
+    for (const auto& m : mounts) {
+        const std::string in = m.inside.string();
+        if (arg.compare(at, in.size(), in) == 0 && (arg.size() == at + in.size() || arg[at + in.size()] == '/'))
+            return arg.substr(0, at) + m.host.string() + arg.substr(at + in.size());
+    }
+    return arg;
+}
+
 RunOutcome runSandboxed(const SandboxRun& run) {
     RunOutcome out;
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe calls.
-    const std::vector<std::string> args = g_sandbox ? bwrapArgs(run) : run.argv;
-    std::vector<char*> argv;
+    std::vector<std::string> args = g_sandbox ? bwrapArgs(run) : run.argv;
+    std::vector<std::string> env_text;
+    if (!g_sandbox) {
+        for (auto& a : args) a = outside(a, run.mounts);
+        for (char** e = ::environ; *e; ++e) env_text.emplace_back(*e);
+        for (const auto& [name, value] : run.env) env_text.push_back(name + "=" + outside(value, run.mounts));
+    }
+    std::vector<char*> argv, envp;
     for (const auto& s : args) argv.push_back(const_cast<char*>(s.c_str()));
     argv.push_back(nullptr);
+    for (const auto& s : env_text) envp.push_back(const_cast<char*>(s.c_str()));
+    envp.push_back(nullptr);
     const uid_t runner = ::geteuid() == 0 && g_sandbox ? kNobody : ::geteuid();
     const rlim_t nproc = static_cast<rlim_t>(processesOf(runner) + run.limits.processes + 4);  // + bwrap's own
     const int log = ::open(run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -154,7 +175,8 @@ RunOutcome runSandboxed(const SandboxRun& run) {
         setLimit(RLIMIT_NOFILE, static_cast<rlim_t>(run.limits.open_files));
         setLimit(RLIMIT_CORE, 0);
         setLimit(RLIMIT_NPROC, nproc);
-        ::execvp(program, argv.data());
+        if (g_sandbox) ::execvp(program, argv.data());
+        else ::execvpe(program, argv.data(), envp.data());
         ::_exit(127);
     }
     ::close(log);

@@ -8,6 +8,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace grade {
@@ -37,6 +38,7 @@ struct SandboxRun {
     fs::path workdir = "/tmp";
     bool channel = false;  ///< open the graded-test channel (fd 3: secret in, fd 4: report out)
     int cpu = -1;          ///< ≥ 0: run on this CPU only (a test and its submission process share one)
+    std::vector<std::pair<std::string, std::string>> env;  ///< variables set for the program (the rest is cleared)
 };
 
 struct RunOutcome {

@@ -292,8 +292,8 @@ std::vector<int> usableCpus() {
 /// One test in its own sandboxed process; the verdict comes from the channel (see graded_main.cpp).
 /// With a `server` (the submission process's program) the test process starts it for the
 /// submission's code; test and submission process share one CPU (`cpu`, or any when < 0).
-TestResult runTest(const fs::path& exe, const fs::path& server, const std::string& name, int timeout_s, int cpu,
-                   const fs::path& log) {
+TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& name,
+                   int timeout_s, int cpu, const fs::path& log) {
     TestResult r;
     r.name = name;
     SandboxRun run;
@@ -303,6 +303,9 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const std::strin
         run.argv.push_back("--clothlab-server=/grade/submission");
         run.mounts.push_back({server, "/grade/submission", false});
     }
+    // The graded experiments read the student's answers.json from here (tests/test_util.h answersPath).
+    run.env = {{"CLOTHLAB_ANSWERS_DIR", "/grade/answers"}};
+    if (!answers.empty()) run.mounts.push_back({answers, "/grade/answers", false});
     run.limits.cpu_seconds = timeout_s + 1;
     run.limits.file_size = 16LL << 20;  // its log too
     run.timeout_seconds = timeout_s;
@@ -346,7 +349,7 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const std::strin
 
 /// Runs the tests of `points` against exe with `jobs` processes at a time; after two timeouts the rest are not run.
 StageResult runStage(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& server,
-                     int timeout_s, int jobs, const fs::path& logs) {
+                     const fs::path& answers, int timeout_s, int jobs, const fs::path& logs) {
     const json points = loadPoints(points_dir, stage);
     StageResult s;
     s.stage = stage;
@@ -364,7 +367,7 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
             r.message = "not run: two tests of this stage timed out already";
         } else {
             const int cpu = cpus.empty() ? -1 : cpus[static_cast<size_t>(worker) % cpus.size()];
-            r = runTest(exe, server, names[i], timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
+            r = runTest(exe, server, answers, names[i], timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
             if (r.message.rfind("timed out", 0) == 0) ++timeouts;
         }
         r.max_points = points["tests"][names[i]].get<double>();
@@ -387,6 +390,18 @@ json hintsTaken(const fs::path& folder, const std::string& stage) {
         if (std::regex_match(it.key(), task) && it->is_number_integer() && it->get<int>() > 0 && it->get<int>() < 10)
             out[it.key()] = it->get<int>();
     return out;
+}
+
+/// A folder holding a copy of the answers file (the graded experiments' numbers), or an empty
+/// folder when there is none: only a regular file of at most 64 KiB is copied, never a link.
+fs::path answersFolder(const fs::path& file, const fs::path& folder) {
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::error_code ec;
+    if (!file.empty() && fs::is_regular_file(fs::symlink_status(file, ec)) && fs::file_size(file, ec) <= 65536)
+        writeFile(folder / "answers.json", readFile(file, 65536));
+    makeWritableForSandbox(folder);
+    return folder;
 }
 
 /// Links `inputs` (sandboxed) into a program called `name`, reused from the cache when the key is
@@ -436,8 +451,8 @@ fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const 
 
 }  // namespace
 
-StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, int timeout_seconds,
-                        int jobs, const fs::path& tmp) {
+StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& answers,
+                        int timeout_seconds, int jobs, const fs::path& tmp) {
     // The suite's integrity: the binary's tests and the points file name the same tests.
     fs::create_directories(tmp);
     SandboxRun list;
@@ -460,7 +475,8 @@ StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, co
         if (!points["tests"].contains(n)) die(points["file"].get<std::string>() + ": tests." + n + ": the graded test has no points");
     for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it)
         if (!names.count(it.key())) die(points["file"].get<std::string>() + ": tests." + it.key() + ": no such test in " + exe.string());
-    return runStage(points_dir, stage, fs::absolute(exe), {}, timeout_seconds, jobs, tmp);
+    const fs::path folder = answersFolder(answers, tmp / ("answers_" + stage));
+    return runStage(points_dir, stage, fs::absolute(exe), {}, folder, timeout_seconds, jobs, tmp);
 }
 
 std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, const GradeOptions& o) {
@@ -529,7 +545,8 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
             continue;
         }
         progress(o.progress, "grading stage " + st.stage + " ...");
-        results.push_back(runStage(kit.points_dir, st.stage, exe, serve, o.timeout_seconds, o.jobs, o.work / "logs"));
+        const fs::path answers = answersFolder(folders.at(st.stage) / "answers.json", o.work / "answers" / st.stage);
+        results.push_back(runStage(kit.points_dir, st.stage, exe, serve, answers, o.timeout_seconds, o.jobs, o.work / "logs"));
     }
     for (auto& r : results)
         if (folders.count(r.stage)) r.hints = hintsTaken(folders.at(r.stage), r.stage);

@@ -62,9 +62,10 @@ struct GradeOptions {
 std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, const GradeOptions& options);
 
 /// Runs the tests of a graded binary built elsewhere (the suite's self-checks): every test of the
-/// points file, each in its own (sandboxed) process.
-StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, int timeout_seconds,
-                        int jobs, const fs::path& tmp);
+/// points file, each in its own (sandboxed) process; `answers`: the answers.json its experiments read
+/// (empty: none).
+StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& answers,
+                        int timeout_seconds, int jobs, const fs::path& tmp);
 
 /// Runs fn(0..count-1) on `jobs` threads (fn(i, worker) when fn takes the worker's number too).
 template <class Fn>
