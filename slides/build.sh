@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Builds the lecture slides: one PDF per chapter (slides/NN_*.md) and the whole course.
 #   bash slides/build.sh [OUT_DIR]     (default: out/slides/)
-# Regenerates the data figures first (slides/make_figures.sh; SLIDES_FIGURES=skip reuses those in
-# OUT_DIR/figures). Writes only into OUT_DIR, never into the source tree.
+# Regenerates the data figures and the live-demo clips first (slides/make_figures.sh into
+# OUT_DIR/figures and OUT_DIR/clips; SLIDES_FIGURES=skip reuses those). Writes only into OUT_DIR,
+# never into the source tree.
 # Needs the Debian packages pandoc texlive-latex-recommended texlive-latex-extra
-# texlive-fonts-recommended lmodern (and gnuplot-nox + the clothlab build for the figures).
+# texlive-fonts-recommended lmodern (and gnuplot-nox, ffmpeg + the clothlab build for the figures).
 set -euo pipefail
 SRC=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 ROOT=$(cd "$SRC/.." && pwd)
@@ -24,13 +25,19 @@ for f in beamer.cls:texlive-latex-recommended tikz.sty:texlive-pictures lmodern.
 done
 
 if [[ ${SLIDES_FIGURES:-} != skip ]]; then
-  bash "$SRC/make_figures.sh" "$OUT/figures"
+  t_fig=$SECONDS
+  bash "$SRC/make_figures.sh" "$OUT/figures" "$OUT/clips"
+  echo "figures and clips: $((SECONDS - t_fig)) s"
 fi
 
 decks=("$SRC"/[0-9][0-9]_*.md)
 # every figure a deck names must have been made (pandoc would only warn and drop it)
 for f in $(grep -ho 'figures/[A-Za-z0-9_]*\.png' "${decks[@]}" | sort -u); do
   [[ -f $OUT/$f ]] || die "$OUT/$f is missing: slides/make_figures.sh must make every figure the decks name"
+done
+# every clip a live-demo slide links (run:clips/NN_name.mp4, relative to the PDFs in OUT_DIR)
+for f in $(grep -ho 'run:clips/[A-Za-z0-9_]*\.mp4' "${decks[@]}" | sed 's/^run://' | sort -u); do
+  [[ -s $OUT/$f ]] || die "$OUT/$f is missing: slides/make_figures.sh must make every clip the decks link"
 done
 opts=(-t beamer --slide-level=2 -H "$SRC/preamble.tex" --resource-path="$OUT:$SRC"
       -V aspectratio=169 -V theme=Madrid -V fontsize=10pt

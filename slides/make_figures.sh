@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
-# The data figures of the slides, made with the lab's own commands (./lab render, ./lab study).
-#   bash slides/make_figures.sh [FIG_DIR]      (default: out/slides/figures/)
-# Needs the clothlab build (./lab builds what is missing) with the renderer, and gnuplot for the
-# study plots. Writes only into FIG_DIR (and a temporary folder); about a minute on 2 cores.
+# The data figures of the slides, made with the lab's own commands (./lab render, ./lab study),
+# and the pre-rendered clips of the live demos.
+#   bash slides/make_figures.sh [FIG_DIR [CLIP_DIR]]
+#     FIG_DIR default out/slides/figures/, CLIP_DIR default FIG_DIR/../clips (next to the PDFs, which
+#     link clips/NN_name.mp4 relative to themselves)
+# Needs the clothlab build (./lab builds what is missing) with the renderer, gnuplot for the study
+# plots and ffmpeg for the clips. Writes only into FIG_DIR, CLIP_DIR (and a temporary folder).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 FIG=${1:-$ROOT/out/slides/figures}
 mkdir -p "$FIG"
 FIG=$(cd "$FIG" && pwd)
+CLIPS=${2:-$(dirname "$FIG")/clips}
+mkdir -p "$CLIPS"
+CLIPS=$(cd "$CLIPS" && pwd)
+command -v ffmpeg >/dev/null || { echo "error: ffmpeg is not installed (the live-demo clips); install it with: sudo apt-get install -y ffmpeg" >&2; exit 1; }
 cd "$ROOT"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 log=$FIG/make_figures.log; : >"$log"
@@ -29,6 +36,16 @@ still() {
   local scene=$1 frames=$2 name=$3; shift 3
   run ./lab gui "$scene" --screenshot "$FIG/$name" --frames "$frames" --size 960x540 "$@"
   echo "  $name"
+}
+# clip SCENE SECONDS NAME [render options...]: the live demo as a short video, 640x360 at 25 fps,
+# CLIP_DIR/NAME (H.264, ./lab render --video); the frames go to the temporary folder
+clip() {
+  local scene=$1 secs=$2 name=$3; shift 3
+  rm -rf "$tmp/clip"
+  run ./lab render "$scene" --seconds "$secs" --fps 25 --size 640x360 --quiet --out "$tmp/clip" \
+    --video "$CLIPS/$name" "$@"
+  [[ -s $CLIPS/$name ]] || { echo "error: ./lab render wrote no $CLIPS/$name (log: $log)" >&2; exit 1; }
+  echo "  clips/$name"
 }
 # study KIND SCENE NAME [options...]: a ./lab study run; its data (CSV, .dat) stays in $tmp/NAME for
 # the slide plots below, drawn from that data with fonts readable from the back of a lecture hall
@@ -126,3 +143,19 @@ still scenes/pbd_hanging.json 200 demo_07.png --strain
 still scenes/pbd_flag.json 150 demo_08.png
 still scenes/pbd_ground.json 150 demo_09.png
 still scenes/pbd_curtain.json 150 demo_10.png --set solver.method=xpbd --set constraints.distance.compliance=0.01
+
+# the same live demos as short clips (the command each slide names), linked from the live-demo
+# slides as clips/NN_name.mp4 for when the demo cannot run; slides/check_clips.sh checks the links
+echo "slides: live-demo clips into $CLIPS"
+t_clips=$SECONDS
+clip scenes/pbd_sphere.json 4 01_pbd_sphere.mp4
+clip scenes/spring.json 3 02_spring.mp4
+clip scenes/spring.json 4 03_spring_explicit_euler.mp4 --set solver.method=explicit_euler --set solver.dt=0.01
+clip scenes/mfn_hanging.json 3 04_mfn_hanging_edges.mp4 --edges
+clip scenes/mfn_hanging.json 3 05_mfn_hanging_strain.mp4 --strain
+clip scenes/pbd_curtain.json 4 06_pbd_curtain.mp4
+clip scenes/pbd_hanging.json 4 07_pbd_hanging_strain.mp4 --strain
+clip scenes/pbd_flag.json 4 08_pbd_flag.mp4
+clip scenes/pbd_ground.json 4 09_pbd_ground.mp4
+clip scenes/pbd_curtain.json 4 10_pbd_curtain_xpbd.mp4 --set solver.method=xpbd --set constraints.distance.compliance=0.01
+echo "  (clips: $((SECONDS - t_clips)) s)"
