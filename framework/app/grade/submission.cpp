@@ -63,7 +63,7 @@ Kit loadKit(const fs::path& file) {
         k.points_dir = j.at("points_dir").get<std::string>();
         for (const auto& s : j.at("stages")) {
             KitStage st{s.at("stage"), s.at("dir"), paths(s.at("tests")), paths(s.at("reference")), paths(s.at("stub")),
-                        paths(s.at("proxy")), {}};
+                        paths(s.at("proxy")), {}, {}};
             k.stages.push_back(st);
         }
     } catch (const std::exception& e) {
@@ -89,6 +89,9 @@ Kit loadKit(const fs::path& file) {
         for (const auto& o : st.reference)
             for (const auto& [name, type] : symbolsOf(o))
                 if (type == 'W' || type == 'V') k.header_instances.insert(name);
+        for (const auto& o : st.proxy)
+            for (const auto& [name, type] : symbolsOf(o))
+                if (type == 'T' && name.rfind("__wrap_", 0) == 0) st.wraps.push_back(name.substr(7));
     }
     std::vector<fs::path> linked = k.main_objects;
     for (const auto* list : {&k.libs, &k.client_objects, &k.server_objects}) linked.insert(linked.end(), list->begin(), list->end());
@@ -514,6 +517,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         // The test process links the graded tests, our code for the stages that come from us, and
         // proxies for those that come from the submission; the submission process links those.
         std::vector<fs::path> client = kit.main_objects, server = kit.server_objects, submitted;
+        std::vector<std::string> client_flags = kit.link_flags;
         client.insert(client.end(), st.tests.begin(), st.tests.end());
         for (const auto& other : kit.stages) {
             const std::vector<fs::path>* use = &other.stub;
@@ -530,6 +534,8 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
             client.insert(client.end(), theirs ? other.proxy.begin() : use->begin(), theirs ? other.proxy.end() : use->end());
             server.insert(server.end(), use->begin(), use->end());
             if (theirs) submitted.insert(submitted.end(), use->begin(), use->end());
+            if (theirs)
+                for (const auto& w : other.wraps) client_flags.push_back("-Wl,--wrap=" + w);
         }
         client.insert(client.end(), kit.client_objects.begin(), kit.client_objects.end());
         client.insert(client.end(), kit.libs.begin(), kit.libs.end());
@@ -538,7 +544,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         server_flags.insert(server_flags.end(), kit.server_link_flags.begin(), kit.server_link_flags.end());
         progress(o.progress, "linking stage " + st.stage);
         std::string problem;
-        const fs::path exe = linkProgram(kit, client, kit.link_flags, {}, "grade_" + st.stage, o, &problem);
+        const fs::path exe = linkProgram(kit, client, client_flags, {}, "grade_" + st.stage, o, &problem);
         const fs::path serve = problem.empty() ? linkProgram(kit, server, server_flags, submitted, "submission_" + st.stage, o, &problem) : fs::path();
         if (!problem.empty()) {
             results.push_back(ungradedStage(kit.points_dir, st.stage, "does not link", problem));

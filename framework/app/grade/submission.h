@@ -18,6 +18,7 @@ struct KitStage {
     std::string dir;    ///< "01_hooke"
     std::vector<fs::path> tests, reference, stub;  ///< object files: graded tests, solutions/ (may be empty), stub
     std::vector<fs::path> proxy;  ///< the stage's functions as calls into the submission process (remote/)
+    std::vector<std::string> wraps;  ///< framework functions the proxies replace (their __wrap_NAME): -Wl,--wrap=NAME
     std::set<std::string> api;                      ///< mangled names the stage defines (from its stub)
 };
 

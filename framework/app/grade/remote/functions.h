@@ -1,8 +1,16 @@
 // Every function a stage's submission implements, with the number that names it on the wire.
 // The submission process serves all of them (remote/serve_main.cpp); the test process calls those
 // of the stages whose code comes from the submission (remote/proxies_NN.cpp).
+//
+// 901–905 are the framework's sweeps (sim/sweeps.h): loops that call a stage's function once per
+// constraint, many times per step. When that stage's code is the submission's, the test process
+// sends the whole sweep (one call per iteration, not one per constraint): the proxies define
+// __wrap_<sweep>, and the grader links with -Wl,--wrap=<sweep>. The result is the positions the
+// submission's function produces either way; the sweep adds nothing the submission could not do.
 #pragma once
 #include <cstdint>
+
+#include "clothlab/sim/sweeps.h"
 
 #define CLOTHLAB_REMOTE_FUNCTIONS(X)                                                                   \
     X(101, hookeForce)                                                                                 \
@@ -25,7 +33,12 @@
     X(601, generatePlaneConstraint)                                                                    \
     X(602, generateSphereConstraint)                                                                   \
     X(603, projectCollisionConstraint)                                                                 \
-    X(604, velocityUpdate)
+    X(604, velocityUpdate)                                                                             \
+    X(901, projectDistanceSweep)                                                                       \
+    X(902, projectDistanceSweepXpbd)                                                                   \
+    X(903, projectBendingSweep)                                                                        \
+    X(904, projectBendingSweepXpbd)                                                                    \
+    X(905, projectCollisionSweep)
 
 namespace clothlab::remote {
 #define CLOTHLAB_REMOTE_ID(id, name) k_##name = id,

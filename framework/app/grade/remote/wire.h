@@ -24,6 +24,7 @@
 #include "clothlab/exercise/04_distance.h"
 #include "clothlab/exercise/05_bending.h"
 #include "clothlab/exercise/06_collision.h"
+#include "clothlab/sim/sweeps.h"
 
 namespace clothlab::remote {
 
@@ -82,6 +83,7 @@ template <class F> void fields(F& f, DistanceCorrection& c) { f(c.dp1, c.dp2); }
 template <class F> void fields(F& f, BendingGradients& g) { f(g.d, g.sinPhi, g.q1, g.q2, g.q3, g.q4, g.valid); }
 template <class F> void fields(F& f, BendingCorrection& c) { f(c.dp1, c.dp2, c.dp3, c.dp4); }
 template <class F> void fields(F& f, BendingStencil& s) { f(s.i1, s.i2, s.i3, s.i4, s.phi0); }
+template <class F> void fields(F& f, DistanceLink& l) { f(l.i, l.j, l.d); }
 template <class F> void fields(F& f, CollisionConstraint& c) {
     f(c.i, c.q, c.n, c.start, c.vnBefore, c.friction, c.restitution);
 }
@@ -98,6 +100,7 @@ template <> struct IsStruct<BendingGradients> : std::true_type {};
 template <> struct IsStruct<BendingCorrection> : std::true_type {};
 template <> struct IsStruct<BendingStencil> : std::true_type {};
 template <> struct IsStruct<CollisionConstraint> : std::true_type {};
+template <> struct IsStruct<DistanceLink> : std::true_type {};
 
 // ---- writing ----
 template <class T> void put(Writer& w, const T& v);
