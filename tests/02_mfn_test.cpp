@@ -87,7 +87,8 @@ TEST(Task2_1_ClothSprings, StructuralCountMatchesFormula) {
             << nx << " x " << ny << " grid: want (nx-1) ny + nx (ny-1) = " << structuralCount(nx, ny)
             << " structural springs (Strukturfedern, to the right and downward neighbour)";
         EXPECT_EQ(static_cast<int>(s.size()), structuralCount(nx, ny))
-            << nx << " x " << ny << ": only structural springs are enabled; every spring must have type Structural";
+            << "the number of springs on a " << nx << " x " << ny << " grid with only structural springs enabled: "
+               "nothing but the " << structuralCount(nx, ny) << " structural ones may be built";
     }
 }
 
@@ -97,7 +98,9 @@ TEST(Task2_1_ClothSprings, ShearCountMatchesFormula) {
         EXPECT_EQ(countType(s, SpringType::Shear), shearCount(nx, ny))
             << nx << " x " << ny << " grid: want 2 (nx-1)(ny-1) = " << shearCount(nx, ny)
             << " shear springs (Scherfedern: BOTH diagonals of every cell)";
-        EXPECT_EQ(static_cast<int>(s.size()), shearCount(nx, ny)) << nx << " x " << ny << ": only shear springs are enabled";
+        EXPECT_EQ(static_cast<int>(s.size()), shearCount(nx, ny))
+            << "the number of springs on a " << nx << " x " << ny << " grid with only shear springs enabled: nothing but the "
+            << shearCount(nx, ny) << " shear ones may be built";
     }
 }
 
@@ -107,22 +110,30 @@ TEST(Task2_1_ClothSprings, BendingCountMatchesFormula) {
         EXPECT_EQ(countType(s, SpringType::Bending), bendingCount(nx, ny))
             << nx << " x " << ny << " grid: want (nx-2) ny + nx (ny-2) = " << bendingCount(nx, ny)
             << " bending springs (Biegefedern, to the neighbours TWO apart, right and down; none where the grid is too small)";
-        EXPECT_EQ(static_cast<int>(s.size()), bendingCount(nx, ny)) << nx << " x " << ny << ": only bending springs are enabled";
+        EXPECT_EQ(static_cast<int>(s.size()), bendingCount(nx, ny))
+            << "the number of springs on a " << nx << " x " << ny << " grid with only bending springs enabled: nothing but the "
+            << bendingCount(nx, ny) << " bending ones may be built";
     }
 }
 
 TEST(Task2_1_ClothSprings, OnlyEnabledTypesAreBuilt) {
     const Matrix3X x = gridPositions(5, 4, 1.0, 1.0);
     EXPECT_TRUE(makeClothSprings(x, 5, 4, only(false, false, false)).empty())
-        << "with every type disabled there must be no springs";
+        << "the springs of a 5 x 4 grid with every spring type disabled: there must be none; got "
+        << makeClothSprings(x, 5, 4, only(false, false, false)).size();
     const auto all = makeClothSprings(x, 5, 4, only(true, true, true));
-    EXPECT_EQ(countType(all, SpringType::Structural), structuralCount(5, 4)) << "all types enabled: structural count";
-    EXPECT_EQ(countType(all, SpringType::Shear), shearCount(5, 4)) << "all types enabled: shear count";
-    EXPECT_EQ(countType(all, SpringType::Bending), bendingCount(5, 4)) << "all types enabled: bending count";
+    EXPECT_EQ(countType(all, SpringType::Structural), structuralCount(5, 4))
+        << "the number of structural springs on a 5 x 4 grid with every type enabled: enabling the others must not change it";
+    EXPECT_EQ(countType(all, SpringType::Shear), shearCount(5, 4))
+        << "the number of shear springs on a 5 x 4 grid with every type enabled: enabling the others must not change it";
+    EXPECT_EQ(countType(all, SpringType::Bending), bendingCount(5, 4))
+        << "the number of bending springs on a 5 x 4 grid with every type enabled: enabling the others must not change it";
     const auto no_shear = makeClothSprings(x, 5, 4, only(true, false, true));
-    EXPECT_EQ(countType(no_shear, SpringType::Shear), 0) << "shear disabled (types.shear.enabled == false) but shear springs were built";
+    EXPECT_EQ(countType(no_shear, SpringType::Shear), 0)
+        << "the number of shear springs on a 5 x 4 grid with shear disabled (types.shear.enabled == false): there must be none";
     EXPECT_EQ(static_cast<int>(no_shear.size()), structuralCount(5, 4) + bendingCount(5, 4))
-        << "structural + bending enabled, shear disabled: wrong number of springs";
+        << "the number of springs on a 5 x 4 grid with structural and bending enabled, shear disabled: exactly the "
+           "structural plus the bending ones";
 }
 
 TEST(Task2_1_ClothSprings, ConnectsTheRightNeighbours) {
@@ -144,7 +155,8 @@ TEST(Task2_1_ClothSprings, ConnectsTheRightNeighbours) {
         else if (sp.type == SpringType::Bending)
             EXPECT_TRUE((dc == 2 && dr == 0) || (dc == 0 && dr == 2)) << where << ": a bending spring joins particles two apart in a row or column";
         else
-            ADD_FAILURE() << where << ": type must be Structural, Shear or Bending";
+            ADD_FAILURE() << where << ": its type must be Structural, Shear or Bending; got the value "
+                          << static_cast<int>(sp.type);
     }
 }
 
@@ -153,7 +165,8 @@ TEST(Task2_1_ClothSprings, NoDuplicateOrSelfSprings) {
         const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(true, true, true));
         std::set<std::pair<int, int>> seen;
         for (const Spring& sp : s) {
-            EXPECT_NE(sp.i, sp.j) << "spring from particle " << sp.i << " to itself";
+            EXPECT_NE(sp.i, sp.j) << "the end points of a spring on a " << nx << " x " << ny
+                                  << " grid: a spring joins two different particles; got one from particle " << sp.i << " to itself";
             EXPECT_TRUE(seen.insert({std::min(sp.i, sp.j), std::max(sp.i, sp.j)}).second)
                 << nx << " x " << ny << ": particles " << sp.i << " and " << sp.j << " are joined twice (each pair at most once)";
         }
@@ -172,15 +185,17 @@ TEST(Task2_1_ClothSprings, RestLengthsFromInitialPositions) {
         if (sp.type == SpringType::Structural) want = horizontal ? 1.0 : 0.5;
         if (sp.type == SpringType::Shear) want = std::sqrt(1.0 + 0.25);
         if (sp.type == SpringType::Bending) want = horizontal ? 2.0 : (vertical ? 1.0 : -1.0);
-        EXPECT_CLOSE(sp.l0, want, 1e-12) << "spring " << sp.i << "-" << sp.j << " on a grid with dx = 1 m, dy = 0.5 m: rest length (Ruhelänge) must be "
-                                        << want << " m, the initial distance of its particles";
+        EXPECT_CLOSE(sp.l0, want, 1e-12) << "the rest length (Ruhelänge) of spring " << sp.i << "-" << sp.j
+                                        << " on a grid with dx = 1 m, dy = 0.5 m: a spring is relaxed in the initial "
+                                           "positions, so it must be their distance, " << want << " m";
     }
     // A distorted grid: l0 is the distance of the given positions, not a grid constant.
     Matrix3X x = gridPositions(nx, ny, 3.0, 1.0);
     for (int i = 0; i < nx * ny; ++i) x.col(i) += Vec3(0.05 * i, 0.02 * (i % 3), -0.03 * i * i / 10.0);
     for (const Spring& sp : makeClothSprings(x, nx, ny, only(true, true, true)))
         EXPECT_CLOSE(sp.l0, (x.col(sp.j) - x.col(sp.i)).norm(), 1e-12)
-            << "positions not on a regular grid: l0 of spring " << sp.i << "-" << sp.j << " must be |x_j - x_i| of the given positions";
+            << "the rest length l0 of spring " << sp.i << "-" << sp.j << " for positions not on a regular grid: a spring is "
+               "relaxed in the given positions, so l0 must be the distance of its particles there";
 }
 
 TEST(Task2_1_ClothSprings, StiffnessAndDampingPerType) {
@@ -189,9 +204,10 @@ TEST(Task2_1_ClothSprings, StiffnessAndDampingPerType) {
     for (const Spring& sp : s) {
         const double k = sp.type == SpringType::Structural ? 100.0 : sp.type == SpringType::Shear ? 50.0 : 10.0;
         const double kd = sp.type == SpringType::Structural ? 0.1 : sp.type == SpringType::Shear ? 0.2 : 0.3;
-        EXPECT_EQ(sp.k, k) << "spring " << sp.i << "-" << sp.j << ": each type takes k from its own group "
-                           << "(structural 100, shear 50, bending 10 N/m here)";
-        EXPECT_EQ(sp.kd, kd) << "spring " << sp.i << "-" << sp.j << ": each type takes kd from its own group (0.1, 0.2, 0.3 here)";
+        EXPECT_EXACT(sp.k, k) << "the stiffness k of spring " << sp.i << "-" << sp.j << ": each type takes k from its own group "
+                              << "(structural 100, shear 50, bending 10 N/m here)";
+        EXPECT_EXACT(sp.kd, kd) << "the damping kd of spring " << sp.i << "-" << sp.j
+                                << ": each type takes kd from its own group (structural 0.1, shear 0.2, bending 0.3 N s/m here)";
     }
 }
 
@@ -204,9 +220,12 @@ TEST(Task2_2_SpringForces, OneSpringMatchesHookeAndDamping) {
     addClothSpringForces({{0, 1, 10.0, 1.0, 2.0, SpringType::Structural}}, x, v, f);
     // Hooke: -10 * 1 along +z on particle 1; damping: relative velocity -1 along +z -> +2.
     EXPECT_TRUE(f.col(1).isApprox(Vec3(0, 0, -8), 1e-12))
-        << "force on particle 1 (p1 = x_j): want hookeForce + springDampingForce = (0,0,-10) + (0,0,2) = (0,0,-8), got " << str(f.col(1));
+        << "the force on particle 1 (x_j) of one spring stretched by 1 m (k = 10) while particle 0 approaches at 1 m/s (kd = 2): "
+           "the spring pulls it back with (0, 0, -10), the damper resists the closing with (0, 0, 2), so it must be (0, 0, -8); got "
+        << str(f.col(1));
     EXPECT_TRUE(f.col(0).isApprox(Vec3(0, 0, 8), 1e-12))
-        << "force on particle 0 (p0 = x_i) must be the opposite (actio = reactio): want (0,0,8), got " << str(f.col(0));
+        << "the force on particle 0 (x_i) of the same spring: actio = reactio, so it must be the opposite, (0, 0, 8); got "
+        << str(f.col(0));
 }
 
 TEST(Task2_2_SpringForces, InternalForcesSumToZero) {
@@ -214,13 +233,17 @@ TEST(Task2_2_SpringForces, InternalForcesSumToZero) {
     Matrix3X f = Matrix3X::Zero(3, cloth.x.cols());
     addClothSpringForces(cloth.springs, cloth.x, cloth.v, f);
     const Vec3 total = f.rowwise().sum();
-    EXPECT_LT(total.norm(), 1e-9 * f.norm()) << "the spring forces of a cloth are internal: they must sum to zero (momentum is conserved), got "
-                                             << str(total) << ". Does every spring act on BOTH its particles, +F on j and -F on i?";
-    EXPECT_GT(f.norm(), 1.0) << "a distorted, moving cloth must feel spring forces";
+    EXPECT_LESS(total.norm(), 1e-9 * f.norm())
+        << "the net spring force on a distorted, moving cloth: spring forces are internal (actio = reactio for every spring), so "
+           "they must sum to zero and create no momentum; got " << str(total);
+    EXPECT_GREATER(f.norm(), 1.0) << "the size |f| of all spring forces on a distorted, moving cloth: its springs are stretched and "
+                                     "compressed, so the forces must not vanish";
     // Angular momentum: Σ x_i × f_i = 0 for central forces.
     Vec3 torque = Vec3::Zero();
     for (int i = 0; i < cloth.x.cols(); ++i) torque += Vec3(cloth.x.col(i)).cross(Vec3(f.col(i)));
-    EXPECT_LT(torque.norm(), 1e-9 * f.norm()) << "spring forces act along the springs: their torques must cancel, got " << str(torque);
+    EXPECT_LESS(torque.norm(), 1e-9 * f.norm())
+        << "the net torque of the spring forces on a distorted, moving cloth: spring forces act along the springs, so their "
+           "torques must cancel; got " << str(torque);
 }
 
 TEST(Task2_2_SpringForces, AddsToExistingForces) {
@@ -228,8 +251,10 @@ TEST(Task2_2_SpringForces, AddsToExistingForces) {
     Matrix3X f0 = Matrix3X::Constant(3, cloth.x.cols(), 0.25), f = Matrix3X::Zero(3, cloth.x.cols());
     addClothSpringForces(cloth.springs, cloth.x, cloth.v, f);
     addClothSpringForces(cloth.springs, cloth.x, cloth.v, f0);
-    EXPECT_LT((f0 - f - Matrix3X::Constant(3, cloth.x.cols(), 0.25)).norm(), 1e-9 * f.norm())
-        << "the spring forces must be ADDED to f (f += ...), not overwrite it: other force terms are already in f";
+    const double existingForceChange = (f0 - f - Matrix3X::Constant(3, cloth.x.cols(), 0.25)).norm();
+    EXPECT_LESS(existingForceChange, 1e-9 * f.norm())
+        << "how much of the 0.25 N per component that f already held was changed or lost: the spring forces come on top of the "
+           "other force terms already in f, which must survive the call";
 }
 
 TEST(Task2_2_SpringForces, IsMinusGradientOfSpringEnergy) {
@@ -245,7 +270,7 @@ TEST(Task2_2_SpringForces, IsMinusGradientOfSpringEnergy) {
             const double grad = (springEnergy(cloth.springs, xp) - springEnergy(cloth.springs, xm)) / (2 * h);
             EXPECT_CLOSE(f(d, i), -grad, 1e-5 * std::max(1.0, std::abs(grad)))
                 << "particle " << i << ", component " << d << ": the spring force must be -dE/dx of E = sum 1/2 k (|x_j-x_i| - l0)^2 "
-                << "(finite differences give " << -grad << ")";
+                << "(finite differences give " << -grad << " N)";
         }
 }
 
@@ -254,8 +279,10 @@ TEST(Task2_2_SpringForces, CoincidentParticlesGiveNoNaN) {
     x.col(2) = Vec3(0, -1, 0);
     v.col(1) = Vec3(1, 0, 0);
     addClothSpringForces({{0, 1, 100.0, 0.5, 1.0, SpringType::Structural}, {1, 2, 100.0, 0.5, 1.0, SpringType::Structural}}, x, v, f);
-    EXPECT_TRUE(f.allFinite()) << "particles 0 and 1 coincide: their spring has no direction; the force must be finite (zero), not NaN";
-    EXPECT_CLOSE(f(1, 2), 50.0, 1e-9) << "the other spring (1-2, stretched by 0.5, k = 100) must still pull particle 2 up with 50 N";
+    EXPECT_TRUE(f.allFinite()) << "the forces when particles 0 and 1 coincide: their spring has no direction, the force must be "
+                                  "finite (zero), not NaN; got " << str(f);
+    EXPECT_CLOSE(f(1, 2), 50.0, 1e-9) << "the y force on particle 2, in N: the other spring (1-2, stretched by 0.5, k = 100) must "
+                                         "still pull particle 2 up with 50 N";
 }
 
 TEST(Task2_2_HangingChain, StaticStretchMatchesAnalytic) {
@@ -280,8 +307,9 @@ TEST(Task2_2_HangingChain, StaticStretchMatchesAnalytic) {
     }
     for (int i = 1; i < n; ++i) {
         const double want = l0 + (n - i) * m * g / k;
-        EXPECT_CLOSE((x.col(i) - x.col(i - 1)).norm(), want, 1e-6)
-            << "hanging chain, link " << i << ": at rest it carries the weight of the " << n - i << " particles below, so its length must be "
+        const double linkLength = (x.col(i) - x.col(i - 1)).norm();
+        EXPECT_CLOSE(linkLength, want, 1e-6)
+            << "the length of link " << i << " of the hanging chain at rest, in m" << ": at rest it carries the weight of the " << n - i << " particles below, so its length must be "
             << "l0 + (n - i) m g / k = " << want << " m";
     }
 }
@@ -296,9 +324,10 @@ TEST(Task2_3_ExternalForces, GravitySumsToTotalMass) {
     addClothExternalForces(s.w, s.v, Vec3(0, -9.81, 0), 0.0, f);
     const Vec3 total = f.rowwise().sum();
     EXPECT_TRUE(total.isApprox(Vec3(0, -0.3 * 9.81, 0), 1e-12))
-        << "a cloth of total mass m_gesamt = 0.3 kg: the gravity forces m_i g must sum to m_gesamt g = (0, -2.943, 0), got " << str(total)
-        << ". Remember m_i = 1 / w_i.";
-    EXPECT_CLOSE(f(1, 5), -0.3 / 24 * 9.81, 1e-12) << "each particle has m_i = m_gesamt / (nx ny) = 0.0125 kg, so f_i = m_i g";
+        << "the total gravity force on a cloth of total mass m_gesamt = 0.3 kg: the weights of its particles must add up to "
+           "m_gesamt g = (0, -2.943, 0); got " << str(total);
+    EXPECT_CLOSE(f(1, 5), -0.3 / 24 * 9.81, 1e-12) << "the y force on particle 5, in N: each of the 24 particles has the mass "
+                                                      "m_gesamt / (nx ny) = 0.0125 kg, so its weight is 0.0125 kg * g";
 }
 
 TEST(Task2_3_ExternalForces, PinnedParticlesGetNoForce) {
@@ -306,11 +335,14 @@ TEST(Task2_3_ExternalForces, PinnedParticlesGetNoForce) {
     w << 0.0, 2.0, 0.0;
     Matrix3X v = Matrix3X::Ones(3, 3), f = Matrix3X::Zero(3, 3);
     addClothExternalForces(w, v, Vec3(0, -10, 0), 0.5, f);
-    EXPECT_TRUE(f.allFinite()) << "pinned particles have w = 0: dividing by w gives Inf; skip them";
-    EXPECT_TRUE(f.col(0).isZero() && f.col(2).isZero()) << "pinned particles (w = 0) must get no gravity and no damping, got "
+    EXPECT_TRUE(f.allFinite()) << "the external forces with pinned particles (w = 0, infinite mass) among them: they must be "
+                                  "finite, not Inf or NaN; got " << str(f);
+    EXPECT_TRUE(f.col(0).isZero() && f.col(2).isZero()) << "the external forces on the pinned particles 0 and 2 (w = 0): a pinned "
+                                                           "particle gets no gravity and no damping; got "
                                                         << str(f.col(0)) << " and " << str(f.col(2));
     EXPECT_TRUE(f.col(1).isApprox(Vec3(-0.5, -5.5, -0.5), 1e-12))
-        << "particle 1: m = 1/w = 0.5 kg, v = (1,1,1), c = 0.5: want m g - c v = (-0.5, -5.5, -0.5), got " << str(f.col(1));
+        << "the external force on particle 1 (w = 2 1/kg, v = (1, 1, 1), g = (0, -10, 0), c = 0.5): its weight plus the air "
+           "damping against its velocity must be (-0.5, -5.5, -0.5); got " << str(f.col(1));
 }
 
 TEST(Task2_3_ExternalForces, DampingOpposesVelocity) {
@@ -318,16 +350,18 @@ TEST(Task2_3_ExternalForces, DampingOpposesVelocity) {
     Matrix3X v(3, 2), f = Matrix3X::Zero(3, 2);
     v << 1, -4, 2, 0, 0, 3;
     addClothExternalForces(w, v, Vec3::Zero(), 2.0, f);
-    EXPECT_TRUE(f.isApprox(-2.0 * v, 1e-12)) << "without gravity the force must be -c v (c = 2), got columns " << str(f.col(0)) << ", "
-                                             << str(f.col(1));
+    EXPECT_TRUE(f.isApprox(-2.0 * v, 1e-12)) << "the external forces without gravity (c = 2): air damping must oppose each "
+                                                "particle's velocity " << str(v) << ", in proportion to it, expected "
+                                             << str(-2.0 * v) << "; got " << str(f);
 }
 
 TEST(Task2_3_ExternalForces, AddsToExistingForces) {
     VectorX w = VectorX::Constant(2, 0.5);
     Matrix3X v = Matrix3X::Zero(3, 2), f = Matrix3X::Constant(3, 2, 1.0);
     addClothExternalForces(w, v, Vec3(0, -1, 0), 0.0, f);
-    EXPECT_TRUE(f.col(0).isApprox(Vec3(1, -1, 1), 1e-12)) << "forces must be added to f (f += m g), not overwrite it: want (1, -1, 1), got "
-                                                          << str(f.col(0));
+    EXPECT_TRUE(f.col(0).isApprox(Vec3(1, -1, 1), 1e-12))
+        << "the force on particle 0 (2 kg, g = (0, -1, 0)) when f already held (1, 1, 1) from other terms: the weight comes on top "
+           "of them, so it must be (1, -1, 1); got " << str(f.col(0));
 }
 
 // ============================ Randomised property tests =======================================

@@ -25,10 +25,14 @@ const Vec3 kP1(0.3, -0.2, 0.5), kP2(1.1, 0.4, -0.1);  // |p1 - p2| = sqrt(0.64+0
 // ---- Task 4.1 --------------------------------------------------------------------------
 TEST(Task4_1_DistanceConstraint, IsLengthMinusRestLength) {
     EXPECT_CLOSE(distanceConstraint(kP1, kP2, 1.0), std::sqrt(1.36) - 1.0, 1e-12)
-        << "C(p1, p2) must be |p1 - p2| - d (positive when stretched)";
+        << "the distance constraint C of p1, p2 at distance 1.16619 m with rest length d = 1 m, in m: it must measure how far "
+           "the pair is stretched beyond d (positive when stretched)";
     EXPECT_CLOSE(distanceConstraint(kP1, kP2, 2.0), std::sqrt(1.36) - 2.0, 1e-12)
-        << "C must be negative when the constraint is compressed (|p1 - p2| < d)";
-    EXPECT_CLOSE(distanceConstraint(kP2, kP1, 1.0), std::sqrt(1.36) - 1.0, 1e-12) << "C is symmetric in p1, p2";
+        << "the distance constraint C of p1, p2 at distance 1.16619 m with rest length d = 2 m, in m: a compressed pair "
+           "(|p1 - p2| < d) must give minus the amount of compression";
+    EXPECT_CLOSE(distanceConstraint(kP2, kP1, 1.0), std::sqrt(1.36) - 1.0, 1e-12)
+        << "the distance constraint C with p1 and p2 swapped (d = 1 m), in m: a distance does not depend on the order of its "
+           "end points";
 }
 
 // ---- Task 4.2 --------------------------------------------------------------------------
@@ -40,77 +44,103 @@ TEST(Task4_2_DistanceGradient, AgreesWithFiniteDifferencesOfC) {
         e[a] = h;
         const double fd1 = (C(kP1 + e, kP2, d) - C(kP1 - e, kP2, d)) / (2 * h);
         const double fd2 = (C(kP1, kP2 + e, d) - C(kP1, kP2 - e, d)) / (2 * h);
-        EXPECT_CLOSE(g[a], fd1, 1e-7) << "component " << a << " of grad_p1 C: yours " << str(g)
-                                     << ", finite differences say " << fd1;
-        EXPECT_CLOSE(-g[a], fd2, 1e-7) << "grad_p2 C = -grad_p1 C must match finite differences (component " << a << ")";
+        EXPECT_CLOSE(g[a], fd1, 1e-7) << "component " << a << " of the gradient of C with respect to p1: it must match the finite "
+                                         "differences of C; your gradient is " << str(g);
+        EXPECT_CLOSE(-g[a], fd2, 1e-7) << "component " << a << " of the gradient of C with respect to p2 (minus the returned one, "
+                                          "as the header states): it must match the finite differences of C; your gradient is "
+                                       << str(g);
     }
-    EXPECT_CLOSE(g.norm(), 1.0, 1e-12) << "the gradient of a distance is a unit vector";
+    EXPECT_CLOSE(g.norm(), 1.0, 1e-12) << "the length of the gradient of C, " << str(g)
+                                       << ": a distance grows by 1 m per metre its end moves straight away, so it must be 1";
 }
 
 TEST(Task4_2_DistanceGradient, CoincidentPointsGiveZeroNotNaN) {
     const Vec3 g = distanceGradient(kP1, kP1);
-    EXPECT_TRUE(g.allFinite()) << "gradient of coincident points is " << str(g) << " (NaN/Inf)";
-    EXPECT_EQ(g.norm(), 0.0) << "coincident points: the direction is undefined, return the zero vector";
+    EXPECT_TRUE(g.allFinite()) << "the gradient of C for coincident points: it must be finite, not NaN or Inf; got " << str(g);
+    EXPECT_EXACT(g.norm(), 0.0) << "the length of the gradient of C for coincident points: the direction is undefined, so the "
+                                   "header requires the zero vector; got " << str(g);
 }
 
 // ---- Task 4.3 --------------------------------------------------------------------------
 TEST(Task4_3_ProjectDistance, StiffnessOneSatisfiesTheConstraintExactly) {
     for (double d : {0.2, 1.0, 1.16619, 3.0}) {
         const auto c = projectDistanceConstraint(kP1, kP2, 2.0, 0.5, d, 1.0);
-        EXPECT_CLOSE(C(kP1 + c.dp1, kP2 + c.dp2, d), 0.0, 1e-12)
-            << "after one projection with k = 1, |p1 - p2| must equal d = " << d;
+        const double constraintAfter = C(kP1 + c.dp1, kP2 + c.dp2, d);
+        EXPECT_CLOSE(constraintAfter, 0.0, 1e-12)
+            << "the constraint C after one projection with k = 1 (d = " << d << " m, w1 = 2, w2 = 0.5), in m: a fully stiff "
+               "projection must satisfy the constraint, |p1 - p2| = d; dp1 = " << str(c.dp1) << ", dp2 = " << str(c.dp2);
     }
 }
 
 TEST(Task4_3_ProjectDistance, MovesAlongTheConstraintDirection) {
     const auto c = projectDistanceConstraint(kP1, kP2, 1.0, 1.0, 0.5, 1.0);
     const Vec3 n = (kP1 - kP2).normalized();
-    EXPECT_LT((c.dp1 - c.dp1.dot(n) * n).norm(), 1e-12) << "dp1 = " << str(c.dp1) << " must be parallel to p1 - p2";
-    EXPECT_LT(c.dp1.dot(n), 0.0) << "a stretched constraint pulls p1 towards p2";
-    EXPECT_GT(c.dp2.dot(n), 0.0) << "a stretched constraint pulls p2 towards p1";
+    const double dp1Sideways = (c.dp1 - c.dp1.dot(n) * n).norm();
+    EXPECT_LESS(dp1Sideways, 1e-12) << "the part of the correction dp1 = " << str(c.dp1) << " across the line p1 - p2, in m: a "
+                                       "projection moves along the constraint's gradient, so it must be parallel to p1 - p2";
+    EXPECT_LESS(c.dp1.dot(n), 0.0) << "the component of dp1 = " << str(c.dp1) << " along the unit vector from p2 to p1, in m: a "
+                                      "stretched constraint (d = 0.5 m) must pull p1 towards p2";
+    EXPECT_GREATER(c.dp2.dot(n), 0.0) << "the component of dp2 = " << str(c.dp2) << " along the unit vector from p2 to p1, in m: a "
+                                         "stretched constraint (d = 0.5 m) must pull p2 towards p1";
 }
 
 TEST(Task4_3_ProjectDistance, ConservesMomentum) {
     const double w1 = 4.0, w2 = 0.25;  // m1 = 0.25 kg, m2 = 4 kg
     const auto c = projectDistanceConstraint(kP1, kP2, w1, w2, 0.4, 0.7);
     const Vec3 momentum = c.dp1 / w1 + c.dp2 / w2;
-    EXPECT_LT(momentum.norm(), 1e-12) << "sum m_i dp_i = " << str(momentum)
-                                      << " must be zero: weight the corrections with w_i / (w1 + w2)";
-    EXPECT_CLOSE(c.dp1.norm() / c.dp2.norm(), w1 / w2, 1e-9) << "|dp1| / |dp2| must be w1 / w2 (light particles move more)";
+    EXPECT_LESS(momentum.norm(), 1e-12) << "the momentum the projection creates, sum m_i dp_i (m1 = 0.25 kg, m2 = 4 kg), in kg m: "
+                                           "a projection creates no momentum, so it must be zero; got " << str(momentum);
+    const double correctionRatio = c.dp1.norm() / c.dp2.norm();
+    EXPECT_CLOSE(correctionRatio, w1 / w2, 1e-9) << "the ratio |dp1| / |dp2| of the corrections of a 0.25 kg and a 4 kg particle: "
+                                                    "with no momentum created the light one must move 16 times as far";
 }
 
 TEST(Task4_3_ProjectDistance, StiffnessScalesTheCorrection) {
     const double d = 0.5, k = 0.3;
     const auto c = projectDistanceConstraint(kP1, kP2, 1.0, 1.0, d, k);
     const double before = C(kP1, kP2, d), after = C(kP1 + c.dp1, kP2 + c.dp2, d);
-    EXPECT_CLOSE(after, (1.0 - k) * before, 1e-12) << "stiffness k must remove the fraction k of the error C";
+    EXPECT_CLOSE(after, (1.0 - k) * before, 1e-12) << "the constraint C after one projection with stiffness k = 0.3, in m: it must "
+                                                      "remove the fraction k of the error C = " << before << " m before";
 }
 
 TEST(Task4_3_ProjectDistance, OnePinnedEndpointTheOtherMovesAllTheWay) {
     const auto c = projectDistanceConstraint(kP1, kP2, 0.0, 2.0, 0.5, 1.0);
-    EXPECT_EQ(c.dp1.norm(), 0.0) << "p1 is pinned (w1 = 0) and must not move";
-    EXPECT_CLOSE(C(kP1, kP2 + c.dp2, 0.5), 0.0, 1e-12) << "with p1 pinned, p2 must move the whole way";
+    EXPECT_EXACT(c.dp1.norm(), 0.0) << "the length of the correction of the pinned p1 (w1 = 0), in m: a pinned particle never "
+                                       "moves; dp1 = " << str(c.dp1);
+    const double afterP1Pinned = C(kP1, kP2 + c.dp2, 0.5);
+    EXPECT_CLOSE(afterP1Pinned, 0.0, 1e-12) << "the constraint C after a projection with k = 1 and p1 pinned, in m: p2 must move "
+                                               "the whole way, so C must be zero; dp2 = " << str(c.dp2);
     const auto c2 = projectDistanceConstraint(kP1, kP2, 3.0, 0.0, 2.0, 1.0);
-    EXPECT_EQ(c2.dp2.norm(), 0.0) << "p2 is pinned (w2 = 0) and must not move";
-    EXPECT_CLOSE(C(kP1 + c2.dp1, kP2, 2.0), 0.0, 1e-12) << "with p2 pinned, p1 must move the whole way";
+    EXPECT_EXACT(c2.dp2.norm(), 0.0) << "the length of the correction of the pinned p2 (w2 = 0), in m: a pinned particle never "
+                                        "moves; dp2 = " << str(c2.dp2);
+    const double afterP2Pinned = C(kP1 + c2.dp1, kP2, 2.0);
+    EXPECT_CLOSE(afterP2Pinned, 0.0, 1e-12) << "the constraint C after a projection with k = 1 and p2 pinned, in m: p1 must move "
+                                               "the whole way, so C must be zero; dp1 = " << str(c2.dp1);
 }
 
 TEST(Task4_3_ProjectDistance, BothPinnedNoMoveNoNaN) {
     const auto c = projectDistanceConstraint(kP1, kP2, 0.0, 0.0, 0.5, 1.0);
-    EXPECT_TRUE(c.dp1.allFinite() && c.dp2.allFinite()) << "both pinned: division by w1 + w2 = 0 gives NaN";
-    EXPECT_EQ(c.dp1.norm() + c.dp2.norm(), 0.0) << "both pinned: nothing may move";
+    EXPECT_TRUE(c.dp1.allFinite() && c.dp2.allFinite()) << "the corrections when both ends are pinned (w1 = w2 = 0): they must "
+                                                           "be finite, not NaN; dp1 = " << str(c.dp1) << ", dp2 = " << str(c.dp2);
+    EXPECT_EXACT(c.dp1.norm() + c.dp2.norm(), 0.0) << "the total length |dp1| + |dp2| of the corrections when both ends are pinned, "
+                                                      "in m: pinned particles never move, so it must be zero";
 }
 
 TEST(Task4_3_ProjectDistance, CoincidentPointsNoMoveNoNaN) {
     const auto c = projectDistanceConstraint(kP1, kP1, 1.0, 1.0, 0.5, 1.0);
-    EXPECT_TRUE(c.dp1.allFinite() && c.dp2.allFinite()) << "coincident points: division by |p1 - p2| = 0 gives NaN";
-    EXPECT_EQ(c.dp1.norm() + c.dp2.norm(), 0.0) << "coincident points: the direction is undefined, do not move";
+    EXPECT_TRUE(c.dp1.allFinite() && c.dp2.allFinite()) << "the corrections for coincident points: they must be finite, not NaN; "
+                                                           "dp1 = " << str(c.dp1) << ", dp2 = " << str(c.dp2);
+    EXPECT_EXACT(c.dp1.norm() + c.dp2.norm(), 0.0) << "the total length |dp1| + |dp2| of the corrections for coincident points, "
+                                                      "in m: the direction is undefined, so the header requires no move";
 }
 
 TEST(Task4_3_ProjectDistance, SatisfiedConstraintDoesNotMove) {
     const double d = std::sqrt(1.36);
     const auto c = projectDistanceConstraint(kP1, kP2, 1.0, 2.0, d, 1.0);
-    EXPECT_LT(c.dp1.norm() + c.dp2.norm(), 1e-12) << "C = 0: the corrections must vanish";
+    const double totalCorrection = c.dp1.norm() + c.dp2.norm();
+    EXPECT_LESS(totalCorrection, 1e-12) << "the total length |dp1| + |dp2| of the corrections of a satisfied constraint (C = 0), "
+                                           "in m: nothing to correct, so they must vanish; dp1 = " << str(c.dp1) << ", dp2 = "
+                                        << str(c.dp2);
 }
 
 // ============================ Randomised property tests =======================================
@@ -217,7 +247,7 @@ TEST(Task4_3_ProjectDistance, RandomOrientationsScalesAndMasses) {
             const double scale = r.dp1.norm() / w1 + r.dp2.norm() / w2;
             if (P.norm() > 1e-9 * scale || L.norm() > 1e-9 * scale * (c.p1.norm() + c.p2.norm()))
                 return testing::AssertionFailure() << "The projection must create no momentum (sum m_i dp_i = 0) and no angular "
-                                                      "momentum (sum p_i x m_i dp_i = 0), so heavy particles move less: "
+                                                      "momentum (sum p_i x m_i dp_i = 0): "
                                                    << in.str() << ": sum m_i dp_i = " << str(P) << ", sum p_i x m_i dp_i = " << str(L) << ".";
         }
         return testing::AssertionSuccess();
@@ -267,7 +297,8 @@ TEST(Experiments, CurtainStrainAtStiffness1) {
 
 TEST(Experiments, CurtainStrainAtStiffness0_9) {
     const double stiff = curtainStrain("1.0"), own = curtainStrain("0.9");
-    EXPECT_GT(own, stiff) << "a softer constraint (k = 0.9) must let the curtain stretch more than k = 1: max_strain "
+    EXPECT_GREATER(own, stiff) << "the max_strain of pbd_curtain after 3 s with your distance constraint at k = 0.9: a softer "
+                                  "constraint must let the curtain stretch more than at k = 1; max_strain "
                           << testing_util::num(own) << " at k = 0.9, " << testing_util::num(stiff) << " at k = 1";
     EXPECT_TRUE(testing_util::gradeAnswer("04_distance", "max_strain_stiffness_0_9", own, 0.03 * std::abs(own),
                                           "max_strain of pbd_curtain after 3 s at distance stiffness k = 0.9, a fraction (1)",

@@ -82,23 +82,28 @@ TEST(Task6_1_PlaneConstraint, GeneratedOnlyWithinTheThickness) {
     const Collider c = plane(Vec3(0, 1, 0), Vec3(0, 1, 0), 0.3, 0.2);
     CollisionConstraint cc;
     EXPECT_FALSE(generatePlaneConstraint(3, Vec3(0, 2, 0), Vec3(0, 1.5, 0), c, 0.1, 0.01, &cc))
-        << "p is 0.5 m above the plane, thickness 0.1 m: no constraint";
+        << "whether a constraint is generated for a particle ending 0.5 m above the plane (thickness 0.1 m): it is clear of "
+           "the plane and its thickness, so there must be none";
     EXPECT_TRUE(generatePlaneConstraint(3, Vec3(0, 2, 0), Vec3(0.1, 1.05, 0), c, 0.1, 0.01, &cc))
-        << "p is 0.05 m above the plane, closer than the thickness 0.1 m: a constraint";
-    EXPECT_EQ(cc.i, 3) << "the particle index";
-    EXPECT_LT((cc.n - Vec3(0, 1, 0)).norm(), 1e-12) << "n_s must be the plane normal";
-    EXPECT_CLOSE((cc.q - Vec3(0, 1, 0)).dot(cc.n), 0.0, 1e-12) << "q_s must lie on the plane";
-    EXPECT_LT((cc.start - Vec3(0, 2, 0)).norm(), 1e-12) << "start must be x";
-    EXPECT_CLOSE(cc.vnBefore, (1.05 - 2.0) / 0.01, 1e-9) << "vnBefore = (p - x).n / dt";
-    EXPECT_EQ(cc.friction, 0.3) << "friction of the collider";
-    EXPECT_EQ(cc.restitution, 0.2) << "restitution of the collider";
+        << "whether a constraint is generated for a particle ending 0.05 m above the plane, closer than the thickness 0.1 m: "
+           "there must be one";
+    EXPECT_EQ(cc.i, 3) << "the particle index of the constraint: it must be the index passed in";
+    EXPECT_LESS((cc.n - Vec3(0, 1, 0)).norm(), 1e-12) << "the constraint normal n_s: it must be the plane's normal (0, 1, 0); got "
+                                                      << str(cc.n);
+    EXPECT_CLOSE((cc.q - Vec3(0, 1, 0)).dot(cc.n), 0.0, 1e-12) << "the height of the contact point q_s = " << str(cc.q) << " above the plane, in m: it must lie on the plane";
+    EXPECT_LESS((cc.start - Vec3(0, 2, 0)).norm(), 1e-12) << "the constraint's start position: it must be the particle's position "
+                                                          "at the start of the step, (0, 2, 0); got " << str(cc.start);
+    EXPECT_CLOSE(cc.vnBefore, (1.05 - 2.0) / 0.01, 1e-9) << "vnBefore, in m/s: the normal velocity with which the particle approached the plane over the step "
+                                                          "(x = (0, 2, 0) to p = (0.1, 1.05, 0) in dt = 0.01 s)";
+    EXPECT_EXACT(cc.friction, 0.3) << "the constraint's friction coefficient: it must be the collider's, 0.3";
+    EXPECT_EXACT(cc.restitution, 0.2) << "the constraint's restitution: it must be the collider's, 0.2";
 }
 
 TEST(Task6_1_PlaneConstraint, FastParticleBelowThePlaneIsCaught) {
     const Collider c = plane(Vec3(0, 0, 0), Vec3(0, 0, 1));
     CollisionConstraint cc;
     EXPECT_TRUE(generatePlaneConstraint(0, Vec3(0, 0, 1), Vec3(0, 0, -5), c, 0.01, 0.01, &cc))
-        << "a particle that ends 5 m below the plane must get a constraint";
+        << "whether a constraint is generated for a particle that ends 5 m below the plane: it went through, so there must be one";
 }
 
 // ---- Task 6.2 ------------------------------------------------------------------------------------
@@ -107,19 +112,26 @@ TEST(Task6_2_SphereConstraint, EntryPointAndNormalAlongThePath) {
     CollisionConstraint cc;
     // Straight down onto the top of the sphere.
     ASSERT_TRUE(generateSphereConstraint(2, Vec3(1, 1, 0), Vec3(1, 0.3, 0), c, 0.0, 0.1, &cc))
-        << "the path (1,1,0) -> (1,0.3,0) enters the sphere of radius 0.5 around (1,0,0)";
-    EXPECT_LT((cc.n - Vec3(0, 1, 0)).norm(), 1e-9) << "entering from the top: n_s = (0, 1, 0), got " << str(cc.n);
-    EXPECT_LT((cc.q - Vec3(1, 0.5, 0)).norm(), 1e-9) << "q_s must be the top of the sphere, got " << str(cc.q);
+        << "whether a constraint is generated for the path (1, 1, 0) -> (1, 0.3, 0): it enters the sphere of radius 0.5 around "
+           "(1, 0, 0), so there must be one";
+    EXPECT_LESS((cc.n - Vec3(0, 1, 0)).norm(), 1e-9) << "the constraint normal n_s for a path entering the sphere straight from "
+                                                     "above: it must be the surface normal there, (0, 1, 0); got " << str(cc.n);
+    EXPECT_LESS((cc.q - Vec3(1, 0.5, 0)).norm(), 1e-9) << "the contact point q_s for a path entering straight from above: it must be "
+                                                       "the top of the sphere, (1, 0.5, 0); got " << str(cc.q);
     // Oblique entry: the normal at the entry point, not at p.
     const Vec3 x(0.2, 0.8, 0), p(1.0, 0.0, 0);
-    ASSERT_TRUE(generateSphereConstraint(2, x, p, c, 0.1, 0.1, &cc));
+    ASSERT_TRUE(generateSphereConstraint(2, x, p, c, 0.1, 0.1, &cc))
+        << "whether a constraint is generated for the oblique path " << str(x) << " -> " << str(p)
+        << " into the sphere (R = 0.5, h = 0.1): it ends at the centre, so there must be one";
     const double Rh = 0.6;
     const Vec3 u = p - x, f = x - c.point;  // solve |f + t u| = Rh here
     const double t = (-u.dot(f) - std::sqrt(u.dot(f) * u.dot(f) - u.squaredNorm() * (f.squaredNorm() - Rh * Rh))) / u.squaredNorm();
     const Vec3 n = (f + t * u).normalized();
-    EXPECT_LT((cc.n - n).norm(), 1e-9) << "n_s must be the normal where the path enters the inflated sphere (radius R + h): want "
-                                       << str(n) << ", got " << str(cc.n);
-    EXPECT_LT((cc.q - (c.point + 0.5 * n)).norm(), 1e-9) << "q_s = c + R n_s";
+    EXPECT_LESS((cc.n - n).norm(), 1e-9) << "the constraint normal n_s for an oblique path: it must be the surface normal where "
+                                         "the path enters the inflated sphere (radius R + h), " << str(n) << "; got " << str(cc.n);
+    EXPECT_LESS((cc.q - (c.point + 0.5 * n)).norm(), 1e-9) << "the contact point q_s for an oblique path: it must be the point of "
+                                                           "the sphere's surface below the entry point, " << str(c.point + 0.5 * n)
+                                                        << "; got " << str(cc.q);
 }
 
 TEST(Task6_2_SphereConstraint, FastParticleDoesNotTunnel) {
@@ -127,24 +139,27 @@ TEST(Task6_2_SphereConstraint, FastParticleDoesNotTunnel) {
     CollisionConstraint cc;
     // From 1 m above to 1 m below in one step: p is outside the sphere, but the path crossed it.
     ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.1, 1, 0), Vec3(0.1, -1, 0), c, 0.01, 0.01, &cc))
-        << "the path crosses the whole sphere: a constraint must be generated (no tunnelling)";
-    EXPECT_GT(cc.n.y(), 0.9) << "the normal must be the one where the particle entered (top), got " << str(cc.n);
+        << "whether a constraint is generated for a path that crosses the whole sphere in one step: "
+           "the particle went through the sphere, so there must be one (no tunnelling)";
+    EXPECT_GREATER(cc.n.y(), 0.9) << "the y component of the constraint normal for a path crossing the sphere from top to bottom: the normal must be the one where the particle entered (top), got " << str(cc.n);
     EXPECT_FALSE(generateSphereConstraint(0, Vec3(2, 1, 0), Vec3(2, -1, 0), c, 0.01, 0.01, &cc))
-        << "a path that passes beside the sphere gives no constraint";
+        << "whether a constraint is generated for a path that passes beside the sphere: it never touches it, so there must be none";
     EXPECT_FALSE(generateSphereConstraint(0, Vec3(0, 2, 0), Vec3(0, 1, 0), c, 0.01, 0.01, &cc))
-        << "a path that stops before the sphere gives no constraint";
+        << "whether a constraint is generated for a path that stops before the sphere: it never touches it, so there must be none";
 }
 
 TEST(Task6_2_SphereConstraint, StartInsideUsesTheClosestSurfacePoint) {
     const Collider c = sphere(Vec3(0, 0, 0), 1.0);
     CollisionConstraint cc;
     ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.5, 0, 0), Vec3(0, 0.6, 0), c, 0.0, 0.01, &cc))
-        << "x and p inside the sphere: a constraint";
-    EXPECT_LT((cc.n - Vec3(0, 1, 0)).norm(), 1e-12) << "n_s must point from the centre to p";
-    EXPECT_LT((cc.q - Vec3(0, 1, 0)).norm(), 1e-12) << "q_s = c + R n_s";
+        << "whether a constraint is generated when x and p are both inside the sphere: the particle is inside, so there must be one";
+    EXPECT_LESS((cc.n - Vec3(0, 1, 0)).norm(), 1e-12) << "the constraint normal n_s for a particle already inside (p = (0, 0.6, 0)): "
+                                                      "it must point from the centre towards p, (0, 1, 0); got " << str(cc.n);
+    EXPECT_LESS((cc.q - Vec3(0, 1, 0)).norm(), 1e-12) << "the contact point q_s for a particle already inside: it must be the "
+                                                      "surface point in the direction of the normal, (0, 1, 0); got " << str(cc.q);
     ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.5, 0, 0), Vec3(0, 0, 0), c, 0.0, 0.01, &cc))
-        << "p at the centre: still a constraint";
-    EXPECT_TRUE(cc.n.allFinite() && std::abs(cc.n.norm() - 1.0) < 1e-12) << "p at the centre: n_s must be a unit vector, got "
+        << "whether a constraint is generated for p exactly at the centre: the particle is inside, so there must be one";
+    EXPECT_TRUE(cc.n.allFinite() && std::abs(cc.n.norm() - 1.0) < 1e-12) << "the constraint normal n_s for p exactly at the centre: the direction is undefined, but it must still be a unit vector (see the header); got "
                                                                           << str(cc.n);
 }
 
@@ -154,16 +169,23 @@ TEST(Task6_3_ProjectCollision, ViolatedConstraintIsSatisfiedExactly) {
     cc.q = Vec3(0, 0, 0), cc.n = Vec3(0, 1, 0), cc.start = Vec3(0.3, 0.5, 0);
     const Vec3 p(0.4, -0.2, 0.1);
     const Vec3 dp = projectCollisionConstraint(p, 1.0, 0.05, cc);
-    EXPECT_CLOSE((p + dp - cc.q).dot(cc.n) - 0.05, 0.0, 1e-12) << "after the projection C(p) = (p - q).n - h must be 0";
-    EXPECT_LT((dp - dp.dot(cc.n) * cc.n).norm(), 1e-12) << "without friction the correction is along n_s only";
+    const double constraintAfter = (p + dp - cc.q).dot(cc.n) - 0.05;
+    EXPECT_CLOSE(constraintAfter, 0.0, 1e-12) << "the collision constraint C after projecting a particle 0.2 m below the surface "
+                                                 "(h = 0.05 m), in m: the projection must put it exactly at the thickness h; dp = "
+                                              << str(dp);
+    const double dpSideways = (dp - dp.dot(cc.n) * cc.n).norm();
+    EXPECT_LESS(dpSideways, 1e-12) << "the part of the correction dp = " << str(dp) << " along the surface, in m: without friction "
+                                      "a contact can only push along its normal n_s";
 }
 
 TEST(Task6_3_ProjectCollision, InequalityOnlyWhenViolatedAndNotForPinned) {
     CollisionConstraint cc;
     cc.q = Vec3(0, 0, 0), cc.n = Vec3(0, 1, 0);
-    EXPECT_EQ(projectCollisionConstraint(Vec3(0, 0.2, 0), 1.0, 0.05, cc).norm(), 0.0)
-        << "C(p) >= 0: an inequality constraint must not pull the particle back to the surface";
-    EXPECT_EQ(projectCollisionConstraint(Vec3(0, -0.2, 0), 0.0, 0.05, cc).norm(), 0.0) << "w = 0 (pinned): no move";
+    EXPECT_EXACT(projectCollisionConstraint(Vec3(0, 0.2, 0), 1.0, 0.05, cc).norm(), 0.0)
+        << "the length of the correction of a particle 0.2 m above the surface (C > 0), in m: a collision is an inequality "
+           "constraint, it must not pull the particle back to the surface";
+    EXPECT_EXACT(projectCollisionConstraint(Vec3(0, -0.2, 0), 0.0, 0.05, cc).norm(), 0.0)
+        << "the length of the correction of a pinned particle (w = 0) below the surface, in m: a pinned particle never moves";
 }
 
 TEST(Task6_3_ProjectCollision, StaticFrictionStopsSmallSlips) {
@@ -172,11 +194,13 @@ TEST(Task6_3_ProjectCollision, StaticFrictionStopsSmallSlips) {
     cc.friction = 0.5;
     const Vec3 p(1.02, -0.05, 0);  // 2 cm sideways, 6 cm too deep (h = 1 cm)
     const Vec3 dp = projectCollisionConstraint(p, 1.0, 0.01, cc);
-    EXPECT_CLOSE(p.x() + dp.x(), 1.0, 1e-12) << "|t| = 0.02 < mu |C| = 0.03: the particle must stick (no sideways slip)";
-    EXPECT_CLOSE(p.y() + dp.y(), 0.01, 1e-12) << "and be pushed out to the thickness";
+    EXPECT_CLOSE(p.x() + dp.x(), 1.0, 1e-12) << "the x position after the projection, in m: the particle slid |t| = 0.02 m along the surface, less than the static "
+           "friction allows (mu |C| = 0.03 m), so it must stick at x = 1 (no sideways slip)";
+    EXPECT_CLOSE(p.y() + dp.y(), 0.01, 1e-12) << "the y position after the projection, in m: the particle must be pushed out to the thickness h = 0.01 m";
     cc.friction = 0.2;
     const Vec3 dp2 = projectCollisionConstraint(p, 1.0, 0.01, cc);
-    EXPECT_CLOSE(p.x() + dp2.x(), 1.02, 1e-12) << "|t| = 0.02 > mu |C| = 0.012: the particle slides (no static friction)";
+    EXPECT_CLOSE(p.x() + dp2.x(), 1.02, 1e-12) << "the x position after the projection, in m: the sideways move |t| = 0.02 m exceeds what static friction holds "
+           "(mu |C| = 0.012 m), so the particle must slide and keep it";
 }
 
 // ---- Task 6.4 ------------------------------------------------------------------------------------
@@ -186,11 +210,14 @@ TEST(Task6_4_VelocityUpdate, RestitutionReflectsTheIncomingNormalVelocity) {
     CollisionConstraint cc;
     cc.i = 1, cc.n = Vec3(0, 1, 0), cc.vnBefore = -4.0, cc.restitution = 0.5;
     velocityUpdate(v, {cc});
-    EXPECT_CLOSE(v(1, 1), 2.0, 1e-12) << "e = 0.5, incoming -4 m/s: outgoing normal velocity +2 m/s";
-    EXPECT_EQ(v.col(0).norm(), 0.0) << "particles without contact keep their velocity";
+    EXPECT_CLOSE(v(1, 1), 2.0, 1e-12) << "the outgoing normal velocity of particle 1, in m/s, after a contact with restitution e = 0.5 hit at -4 m/s: "
+           "it must rebound with e times the incoming speed";
+    EXPECT_EXACT(v.col(0).norm(), 0.0) << "the speed of particle 0, which has no contact, in m/s: a particle without contact keeps "
+                                          "its (zero) velocity; its velocity is " << str(v.col(0));
     v.col(1) = Vec3(0, 3.0, 0);  // already separating faster than e |v_in|
     velocityUpdate(v, {cc});
-    EXPECT_CLOSE(v(1, 1), 3.0, 1e-12) << "restitution must not slow a particle that separates faster";
+    EXPECT_CLOSE(v(1, 1), 3.0, 1e-12) << "the normal velocity of a particle that already separates at 3 m/s (faster than e times its approach), in m/s: "
+           "restitution must not slow it";
 }
 
 TEST(Task6_4_VelocityUpdate, CoulombFrictionOnTheTangentialVelocity) {
@@ -199,17 +226,20 @@ TEST(Task6_4_VelocityUpdate, CoulombFrictionOnTheTangentialVelocity) {
     CollisionConstraint cc;
     cc.i = 0, cc.n = Vec3(0, 1, 0), cc.vnBefore = -2.0, cc.friction = 0.25;
     velocityUpdate(v, {cc});
-    EXPECT_CLOSE(v(0, 0), 0.5, 1e-12) << "mu = 0.25 and a normal velocity change of 2 m/s remove 0.5 m/s of tangential velocity";
+    EXPECT_CLOSE(v(0, 0), 0.5, 1e-12) << "the tangential velocity after the contact, in m/s: with mu = 0.25 and a normal velocity change of 2 m/s, friction "
+           "must remove 0.5 m/s of it (Coulomb: the friction impulse is at most mu times the normal one)";
     v.col(0) = Vec3(1.0, 0.0, 0.0);
     cc.friction = 2.0;
     velocityUpdate(v, {cc});
-    EXPECT_CLOSE(v(0, 0), 0.0, 1e-12) << "friction stops the particle but never reverses it";
+    EXPECT_CLOSE(v(0, 0), 0.0, 1e-12) << "the tangential velocity after a contact with strong friction (mu = 2), in m/s: friction may stop the particle but "
+           "never reverse it";
     EXPECT_TRUE(v.allFinite()) << "velocityUpdate with mu = 2 (friction larger than needed to stop) must give finite velocities; got "
                                << str(v.col(0));
     v.col(0) = Vec3(1.0, 0.0, 0.0);
     cc.vnBefore = 0.5;  // was separating: no normal impulse, no friction
     velocityUpdate(v, {cc});
-    EXPECT_CLOSE(v(0, 0), 1.0, 1e-12) << "no normal velocity change, no friction";
+    EXPECT_CLOSE(v(0, 0), 1.0, 1e-12) << "the tangential velocity after a contact without normal velocity change, in m/s: no normal impulse, so no friction "
+           "may act and it must stay 1";
 }
 
 // ---- Whole steps (all tasks together) ---------------------------------------------------------------
@@ -229,10 +259,11 @@ TEST(Task6_4_CollisionSteps, NothingPenetratesIncludingFastParticles) {
         step(P, cols, h, 0.01, 4);
         for (int i = 0; i < 5; ++i)
             for (const auto& c : cols)
-                ASSERT_GE(distanceTo(c, P.x.col(i)), -1e-9)
-                    << "step " << s << ": particle " << i << " at " << str(P.x.col(i)) << " is inside a collider";
+                ASSERT_GREATER_EQ(distanceTo(c, P.x.col(i)), -1e-9)
+                    << "the signed distance of a particle to a collider's surface, in m (negative: inside), after step " << s << ": particle " << i << " at " << str(P.x.col(i)) << " is inside a collider";
     }
-    EXPECT_GT(P.x(0, 4), 0.0) << "the sideways particle must have bounced back (not tunnelled to x < 0)";
+    EXPECT_GREATER(P.x(0, 4), 0.0) << "the x position of the sideways-flying particle 4 at the end, in m: the wall at x = 0 must "
+                                      "have stopped it (no tunnelling to x < 0)";
 }
 
 TEST(Task6_4_CollisionSteps, ClothRestingOnAPlaneDoesNotJitter) {
@@ -265,8 +296,10 @@ TEST(Task6_4_CollisionSteps, ClothRestingOnAPlaneDoesNotJitter) {
         maxDev = std::max(maxDev, (P.x - x0).cwiseAbs().maxCoeff());
         maxV = std::max(maxV, P.v.cwiseAbs().maxCoeff());
     }
-    EXPECT_LT(maxDev, 1e-6) << "a cloth resting on the ground moved by up to " << maxDev << " m over 10 s";
-    EXPECT_LT(maxV, 1e-4) << "a cloth resting on the ground reached a velocity of " << maxV << " m/s (jitter)";
+    EXPECT_LESS(maxDev, 1e-6) << "the largest displacement of a cloth resting on the ground over 10 s, in m: at rest on a "
+                                 "surface it must stay put";
+    EXPECT_LESS(maxV, 1e-4) << "the largest velocity component of a cloth resting on the ground over 10 s, in m/s: at rest it "
+                               "must not jitter";
 }
 
 TEST(Task6_4_CollisionSteps, BlockOnAnInclineSticksWhenMuIsAtLeastTanTheta) {
@@ -280,8 +313,9 @@ TEST(Task6_4_CollisionSteps, BlockOnAnInclineSticksWhenMuIsAtLeastTanTheta) {
         P.v = Matrix3X::Zero(3, 1);
         P.w = VectorX::Ones(1);
         for (int s = 0; s < 400; ++s) step(P, cols, h, dt, 4);
-        EXPECT_LT((P.x.col(0) - h * n).norm(), 1e-9) << "mu = " << mu << " >= tan(theta) = " << std::tan(theta)
-                                                      << ": the block must stick, but it moved to " << str(P.x.col(0));
+        const double slid = (P.x.col(0) - h * n).norm();
+        EXPECT_LESS(slid, 1e-9) << "how far the block on a 25 degree incline slid in 2 s, in m: mu = " << mu << " >= tan(theta) = "
+                                << std::tan(theta) << ", so static friction must hold it; it is at " << str(P.x.col(0));
     }
 }
 
@@ -299,11 +333,14 @@ TEST(Task6_4_CollisionSteps, BlockOnAnInclineSlidesWithTheAnalyticAcceleration) 
         for (int s = 0; s < steps; ++s) step(P, cols, h, dt, 4);
         const double a = 9.81 * (std::sin(theta) - mu * std::cos(theta));
         const double speed = P.v.col(0).norm();
-        EXPECT_CLOSE(speed, a * T, 0.01 * a * T) << "mu = " << mu << ": speed after " << T << " s must be g (sin - mu cos) t = "
+        EXPECT_CLOSE(speed, a * T, 0.01 * a * T) << "the speed of the block sliding down a 30 degree incline after " << T << " s with mu = " << mu
+                                                << ", in m/s: gravity along the slope minus kinetic friction must give g (sin - mu cos) t = "
                                                 << a * T << " m/s";
         const double dist = (P.x.col(0) - h * n).norm();
-        EXPECT_CLOSE(dist, 0.5 * a * T * T, 0.015 * 0.5 * a * T * T) << "mu = " << mu << ": distance slid must be a t^2 / 2 = " << 0.5 * a * T * T << " m (1.5 %)";
-        EXPECT_CLOSE((P.x.col(0)).dot(n), h, 1e-9) << "the block must stay on the slope at the thickness h";
+        EXPECT_CLOSE(dist, 0.5 * a * T * T, 0.015 * 0.5 * a * T * T) << "the distance the block slid down the 30 degree incline in " << T << " s with mu = " << mu << ", in m: uniform acceleration must give a t^2 / 2 = " << 0.5 * a * T * T << " m (1.5 %)";
+        const double heightAboveSlope = P.x.col(0).dot(n);
+        EXPECT_CLOSE(heightAboveSlope, h, 1e-9) << "the height of the sliding block above the slope, in m: it must stay on the slope "
+                                                   "at the thickness h = 0.01 m";
     }
 }
 
@@ -324,8 +361,10 @@ TEST(Task6_4_CollisionSteps, RestitutionGivesTheAnalyticReboundHeight) {
             if (bounced) apex = std::max(apex, P.x(1, 0) - h);
             if (bounced && P.v(1, 0) < 0) break;
         }
-        EXPECT_TRUE(bounced) << "e = " << e << ": the particle never bounced";
-        EXPECT_CLOSE(apex, e * e * H, 0.02 * e * e * H) << "e = " << e << ": rebound height must be e^2 H = " << e * e * H << " m";
+        EXPECT_TRUE(bounced) << "whether a particle dropped from H = 1 m onto a plane with restitution e = " << e
+                             << " bounced (its velocity turned upward): with e > 0 it must";
+        EXPECT_CLOSE(apex, e * e * H, 0.02 * e * e * H) << "the rebound height of a particle dropped from H = 1 m with restitution e = " << e
+            << ", in m: it hits with sqrt(2 g H) and leaves with e times that, so it must rise to e^2 H = " << e * e * H << " m";
     }
 }
 

@@ -19,14 +19,6 @@
 
 namespace clothlab::testing_util {
 
-/// "(x, y, z)" for failure messages.
-inline std::string str(const Vec3& v) {
-    std::ostringstream s;
-    s.precision(10);
-    s << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-    return s.str();
-}
-
 // ---- Numbers in messages --------------------------------------------------------------------------
 
 /// A number with 6 significant digits ("0.3", not "0.29999999999999999").
@@ -35,6 +27,26 @@ inline std::string num(double v) {
     s.precision(6);
     s << v;
     return s.str();
+}
+
+/// "(x, y, z)" for failure messages, each coordinate with 6 significant digits: "(0.1, 0, -2.5)".
+inline std::string str(const Vec3& v) {
+    return "(" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + ")";
+}
+
+/// A matrix or vector for failure messages, 6 significant digits: a row or column vector as
+/// "(a, b, c)", a matrix column by column, e.g. the positions of a 3 x N matrix as "[(x0), (x1), ...]".
+template <class Derived>
+std::string str(const Eigen::MatrixBase<Derived>& m) {
+    auto vec = [](const auto& v) {
+        std::string s = "(";
+        for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + num(static_cast<double>(v(i)));
+        return s + ")";
+    };
+    if (m.rows() == 1 || m.cols() == 1) return vec(m.reshaped());
+    std::string s = "[";
+    for (Eigen::Index j = 0; j < m.cols(); ++j) s += (j ? ", " : "") + vec(m.col(j));
+    return s + "]";
 }
 
 /// Two numbers that are compared: 6 significant digits, or more until they print differently
@@ -72,6 +84,37 @@ inline testing::AssertionResult sameDoubleFormat(const char* actual_expr, const 
                                        << " (equal up to rounding).";
 }
 
+/// EXPECT_LT/GT/LE/GE/EQ's checks on numbers with a message in 6 significant digits that names the
+/// expressions: "worst = 0.2, must be < 0.15." (GoogleTest's own would print 0.20000000000000001).
+/// Use through EXPECT_LESS, EXPECT_LESS_EQ, EXPECT_GREATER, EXPECT_GREATER_EQ, EXPECT_EXACT (and ASSERT_*).
+template <class Cmp>
+testing::AssertionResult compareFormat(const char* actual_expr, const char* bound_expr, double actual, double bound, Cmp cmp,
+                                       const char* op) {
+    if (cmp(actual, bound)) return testing::AssertionSuccess();
+    const auto [a, b] = numPair(actual, bound);
+    testing::AssertionResult r = testing::AssertionFailure();
+    r << actual_expr << " = " << a << ", must be " << op << " ";
+    if (b == bound_expr) r << b << ".";
+    else r << bound_expr << " = " << b << ".";
+    return r;
+}
+inline testing::AssertionResult lessFormat(const char* ae, const char* be, double a, double b) {
+    return compareFormat(ae, be, a, b, [](double x, double y) { return x < y; }, "<");
+}
+inline testing::AssertionResult lessEqFormat(const char* ae, const char* be, double a, double b) {
+    return compareFormat(ae, be, a, b, [](double x, double y) { return x <= y; }, "<=");
+}
+inline testing::AssertionResult greaterFormat(const char* ae, const char* be, double a, double b) {
+    return compareFormat(ae, be, a, b, [](double x, double y) { return x > y; }, ">");
+}
+inline testing::AssertionResult greaterEqFormat(const char* ae, const char* be, double a, double b) {
+    return compareFormat(ae, be, a, b, [](double x, double y) { return x >= y; }, ">=");
+}
+/// Exactly equal (==), as EXPECT_EQ on doubles, printed as precisely as needed to tell them apart.
+inline testing::AssertionResult exactFormat(const char* ae, const char* be, double a, double b) {
+    return compareFormat(ae, be, a, b, [](double x, double y) { return x == y; }, "exactly");
+}
+
 }  // namespace clothlab::testing_util
 
 /// EXPECT_DOUBLE_EQ with numbers as short as they can be (testing_util::sameDoubleFormat).
@@ -83,6 +126,27 @@ inline testing::AssertionResult sameDoubleFormat(const char* actual_expr, const 
 /// ASSERT_NEAR with numbers in 6 significant digits (testing_util::closeFormat).
 #define ASSERT_CLOSE(actual, expected, tolerance) \
     ASSERT_PRED_FORMAT3(::clothlab::testing_util::closeFormat, actual, expected, tolerance)
+/// EXPECT_LT / EXPECT_LE / EXPECT_GT / EXPECT_GE / EXPECT_EQ on doubles with numbers in 6 significant
+/// digits (testing_util::compareFormat); the ASSERT_ forms stop the test.
+#define EXPECT_LESS(actual, bound) EXPECT_PRED_FORMAT2(::clothlab::testing_util::lessFormat, actual, bound)
+#define EXPECT_LESS_EQ(actual, bound) EXPECT_PRED_FORMAT2(::clothlab::testing_util::lessEqFormat, actual, bound)
+#define EXPECT_GREATER(actual, bound) EXPECT_PRED_FORMAT2(::clothlab::testing_util::greaterFormat, actual, bound)
+#define EXPECT_GREATER_EQ(actual, bound) EXPECT_PRED_FORMAT2(::clothlab::testing_util::greaterEqFormat, actual, bound)
+#define EXPECT_EXACT(actual, expected) EXPECT_PRED_FORMAT2(::clothlab::testing_util::exactFormat, actual, expected)
+#define ASSERT_LESS(actual, bound) ASSERT_PRED_FORMAT2(::clothlab::testing_util::lessFormat, actual, bound)
+#define ASSERT_GREATER(actual, bound) ASSERT_PRED_FORMAT2(::clothlab::testing_util::greaterFormat, actual, bound)
+#define ASSERT_GREATER_EQ(actual, bound) ASSERT_PRED_FORMAT2(::clothlab::testing_util::greaterEqFormat, actual, bound)
+#define ASSERT_EXACT(actual, expected) ASSERT_PRED_FORMAT2(::clothlab::testing_util::exactFormat, actual, expected)
+
+// Every double streamed into a failure message (`EXPECT_...(...) << x`, `AssertionFailure() << x`) prints
+// with 6 significant digits, not GoogleTest's 17 (0.3, not 0.29999999999999999). Non-template overloads
+// beat the member templates of Message and AssertionResult, and ADL finds them in namespace testing.
+namespace testing {
+inline Message& operator<<(Message& m, const double& v) { return m << ::clothlab::testing_util::num(v).c_str(); }
+inline Message& operator<<(Message&& m, const double& v) { return m << ::clothlab::testing_util::num(v).c_str(); }
+inline AssertionResult& operator<<(AssertionResult& r, const double& v) { return r << ::clothlab::testing_util::num(v).c_str(); }
+inline AssertionResult& operator<<(AssertionResult&& r, const double& v) { return r << ::clothlab::testing_util::num(v).c_str(); }
+}  // namespace testing
 
 namespace clothlab::testing_util {
 
