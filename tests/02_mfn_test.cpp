@@ -516,8 +516,10 @@ TEST(Task2_3_ExternalForces, GravityInAnyDirectionWithRandomMasses) {
 TEST(Experiments, CriticalTimeStepOfTheSoftCloth) {
     const Scene scene = parseScene(kScene_mfn_hanging, "scenes/mfn_hanging.json");
     const double omega = maxAngularFrequency(scene), theory = theoreticalCriticalDt(Method::SymplecticEuler, omega);
-    // as the study measures it: bisection between theory / 10 and theory * 10, 1000 steps per run, with your forces
-    const double own = measureCriticalDt(scene, Method::SymplecticEuler, theory / 10, theory * 10, StabilityCriteria{});
+    // shown beside the grade: a bisection between theory / 3 and theory * 3 with your forces
+    StabilityCriteria shortRuns;  // 300 steps per run, not the study's 1000: the grader calls your forces in another process
+    shortRuns.steps = 300;
+    const double own = measureCriticalDt(scene, Method::SymplecticEuler, theory / 3, theory * 3, shortRuns);
     EXPECT_TRUE(testing_util::gradeAnswer(
         "02_mfn", "critical_dt_symplectic_euler", theory, 0.1 * theory, "the largest stable time step of symplectic Euler at k = 50 N/m, s",
         "theory says dt_crit = 2 / omega_max with omega_max = " + testing_util::num(omega) + " rad/s (10 %); the same bisection with "
