@@ -46,7 +46,7 @@ done
 CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/bare" --no-reference-objects >"$tmp/bare.log" 2>&1 || { cat "$tmp/bare.log"; fail "lab release --no-reference-objects"; }
 [[ ! -e $tmp/bare/framework/reference ]] || fail "--no-reference-objects: the copy has framework/reference/"
 (cd "$tmp/bare" && CLOTHLAB_BUILD=$tmp/bare-build ./lab build --reference 05,06) >"$tmp/bare-build.log" 2>&1 && fail "--reference 05,06 in a copy without reference objects succeeds"
-grep -q "no reference for stage 05, 06" "$tmp/bare-build.log" && grep -q -- "--no-reference-objects" "$tmp/bare-build.log" \
+grep -q "no reference for stage 05,06" "$tmp/bare-build.log" && grep -q -- "--no-reference-objects" "$tmp/bare-build.log" \
   || fail "--reference in a copy without reference objects: $(cat "$tmp/bare-build.log")"
 [[ ! -e $tmp/bare-build ]] || fail "--reference in a copy without reference objects configured a build before saying no"
 rm -rf "$tmp/bare"
