@@ -3,7 +3,8 @@
 #   - a copy of the public headers only (clothlab/core, clothlab/exercise): a submission is
 #     compiled in a sandbox that sees these and its own files, nothing else of the tree;
 #   - the compiler and the flags this build compiles with (same ABI, same numerics);
-#   - per stage the object files of its graded tests, its reference (solutions/, when present)
+#   - per stage the object files of its graded tests, its reference (solutions/ compiled here, or in the
+#     student copy the objects of framework/reference/, when present)
 #     its stub and its proxies (the test side of running the submission in a process of its own);
 #   - the graded main(), the framework library and GoogleTest to link the test process with, and
 #     the main() of the submission process (framework/app/grade/remote/).
@@ -28,9 +29,11 @@ foreach(NN IN LISTS CLOTHLAB_STAGES)
     continue()
   endif()
   set(_ref "[]")
-  if(CLOTHLAB_HAS_SOLUTION_${NN})
+  if(CLOTHLAB_HAS_REFERENCE_${NN})  # solutions/ compiled here, or the student copy's reference objects
     set(_ref "[\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_solutions>,\", \">\"]")
-    list(APPEND _kit_deps stage_${NN}_solutions)
+    if(CLOTHLAB_HAS_SOLUTION_${NN})
+      list(APPEND _kit_deps stage_${NN}_solutions)
+    endif()
   endif()
   if(_stages_json)
     string(APPEND _stages_json ",\n")

@@ -4,20 +4,57 @@
 # with "not implemented: exercise ..." instead of crashing. The copy holds exactly the committed files
 # (git ls-tree HEAD) minus solutions/ and tests/instructor/, and gives away no reference function body
 # (clothlab-leak-check, the last step).
+# The copy carries the reference of every stage as compiled objects only (framework/reference/, made
+# by the instructor's build BUILD_DIR, stripped): the test finishes stages 01-04 as a student would,
+# runs pbd_sphere with `./lab build --reference 05,06`, edits a stage and sees `./lab run` run the edit;
+# a copy released with --no-reference-objects has none, and `--reference` there says so.
+#   release_test.sh SOURCE_ROOT LEAK_CHECK BUILD_DIR [fast]
+# fast: only the release itself (file list, the objects: no source, no debug info, no source path) and
+# the copy without objects; no build of the copy.
 set -u
-root=$1; leak_check=$2
+root=$1; leak_check=$2; build_dir=$3; mode=${4:-full}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
-"$root/lab" release "$tmp/copy" || fail "lab release"
+CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/copy" >"$tmp/release.log" 2>&1 || { cat "$tmp/release.log"; fail "lab release"; }
+grep -q "reference objects" "$tmp/release.log" || fail "lab release does not report the reference objects: $(tail -2 "$tmp/release.log")"
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
 [[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
 # Exactly the committed files: nothing untracked, no build output.
 { git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/classroom.yml
-  git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'; } | sort >"$tmp/want.txt"
+  git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'
+  echo framework/reference/compiler.txt
+  (cd "$tmp/copy" && find framework/reference -name '*.o' 2>/dev/null); } | sort >"$tmp/want.txt"
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
-  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the Classroom workflow and framework/stubs/: $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the Classroom workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+# The reference objects: every stage of solutions/ has some, no source beside them, no debug information
+# (source paths, lines), no path into solutions/ (a Debug build's assert messages would quote code).
+for d in "$root"/solutions/[0-9][0-9]_*/; do
+  d=$(basename "$d")
+  compgen -G "$tmp/copy/framework/reference/$d/*.o" >/dev/null || fail "no reference objects framework/reference/$d/*.o in the copy"
+done
+grep -q '^compiler_id=GNU$' "$tmp/copy/framework/reference/compiler.txt" && grep -q '^compiler_version=[0-9]' "$tmp/copy/framework/reference/compiler.txt" \
+  || fail "framework/reference/compiler.txt does not record the compiler: $(head -c 300 "$tmp/copy/framework/reference/compiler.txt")"
+for o in "$tmp"/copy/framework/reference/*/*.o; do
+  objdump -h "$o" | grep -q -E '\.debug_|\.gnu\.lto_' && fail "${o#$tmp/copy/}: has debug or LTO sections: $(objdump -h "$o" | grep -o -E '\.(debug|gnu\.lto)_[a-z_.]*' | head -3 | tr '\n' ' ')"
+  strings -a "$o" | grep -q -F "$root" && fail "${o#$tmp/copy/}: names a path of the instructor's tree: $(strings -a "$o" | grep -F "$root" | head -2)"
+  strings -a "$o" | grep -q 'solutions/' && fail "${o#$tmp/copy/}: names solutions/: $(strings -a "$o" | grep 'solutions/' | head -2)"
+done
+
+# A copy without the objects: none in it, and asking for the reference says so (before any build).
+CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/bare" --no-reference-objects >"$tmp/bare.log" 2>&1 || { cat "$tmp/bare.log"; fail "lab release --no-reference-objects"; }
+[[ ! -e $tmp/bare/framework/reference ]] || fail "--no-reference-objects: the copy has framework/reference/"
+(cd "$tmp/bare" && CLOTHLAB_BUILD=$tmp/bare-build ./lab build --reference 05,06) >"$tmp/bare-build.log" 2>&1 && fail "--reference 05,06 in a copy without reference objects succeeds"
+grep -q "no reference for stage 05,06" "$tmp/bare-build.log" && grep -q -- "--no-reference-objects" "$tmp/bare-build.log" \
+  || fail "--reference in a copy without reference objects: $(cat "$tmp/bare-build.log")"
+[[ ! -e $tmp/bare-build ]] || fail "--reference in a copy without reference objects configured a build before saying no"
+rm -rf "$tmp/bare"
+if [[ $mode == fast ]]; then
+  "$leak_check" "$root" "$tmp/copy" || fail "the copy gives away reference code (lines above)"
+  echo "release copy: the committed files, stubs, stripped reference objects with their compiler; without them on request; no leak"
+  exit 0
+fi
 
 cd "$tmp/copy" || fail "cd"
 # The build is outside the copy, so the copy stays as released (the leak check reads it last).
@@ -43,8 +80,10 @@ for s in scenes/*.json; do
   "$CLOTHLAB_BUILD/bin/clothlab" run "$s" --steps 5 >"$tmp/run.log" 2>&1
   code=$?
   [[ $code -eq 2 ]] && grep -q "not implemented: exercise" "$tmp/run.log" || fail "$s in the copy: exit $code, $(tail -2 "$tmp/run.log")"
-  # advice that works in a copy without solutions/: finish the task, grade, hint (not --reference)
-  grep -q "./lab hint [1-9]" "$tmp/run.log" && ! grep -q -- "--reference" "$tmp/run.log" || fail "$s in the copy: advice $(tail -1 "$tmp/run.log")"
+  # advice that works in this copy: finish the task (hint, grade), or the stage's reference objects
+  nn=$(grep -o "not implemented: exercise [1-9]" "$tmp/run.log" | head -1 | grep -o '[1-9]$')
+  grep -q "./lab hint $nn\.[0-9]" "$tmp/run.log" && grep -q -- "./lab build --reference 0$nn)" "$tmp/run.log" \
+    || fail "$s in the copy: advice $(tail -1 "$tmp/run.log")"
 done
 # The instructors' batched bending kernel is not in the copy (nothing registers it at the solver's
 # extension point): asking for it is one clear input error that lists what there is.
@@ -64,6 +103,36 @@ tests=$(grep -c '"name":' "$tmp/grade.json")  # one per graded test
 grep -q '"version":1' "$tmp/classroom.json" && grep -q '"status":"fail"' "$tmp/classroom.json" \
   && [[ $(grep -o '"score":0' "$tmp/classroom.json" | wc -l) -eq $tests ]] \
   || fail "the reporter's JSON lacks version/status or a score per test ($tests tests): $(head -c 300 "$tmp/classroom.json")"
+# Later stages do not wait for earlier ones: a student who finished 01-04 (here: the reference source
+# copied in) runs the lecture demo with the reference objects for 05 and 06, then edits stage 04 and
+# `./lab run` runs the edit. The copy's exercises/ is restored before the leak check.
+cp -a exercises "$tmp/exercises.pristine"
+for nn in 01 02 03 04; do
+  d=$(cd "$root/solutions" && compgen -G "${nn}_*" | head -1)
+  cp "$root/solutions/$d"/*.cpp "exercises/$d/" || fail "copy solutions/$d into the copy"
+done
+./lab build --reference 05,06 >"$tmp/build-ref.log" 2>&1 || { tail -20 "$tmp/build-ref.log"; fail "./lab build --reference 05,06 in the copy"; }
+grep -q "stage 05 (05_bending) uses stage_05_solutions" "$CLOTHLAB_BUILD.configure.log" \
+  && grep -q "stage 04 (04_distance) uses stage_04_exercises" "$CLOTHLAB_BUILD.configure.log" \
+  || fail "--reference 05,06 in the copy: $(grep 'uses stage_' "$CLOTHLAB_BUILD.configure.log" | tr '\n' ' ')"
+./lab run scenes/pbd_sphere.json --quiet >"$tmp/sphere.log" 2>&1 || { tail -5 "$tmp/sphere.log"; fail "pbd_sphere with stages 01-04 done and the reference objects for 05-06"; }
+grep -q "^summary" "$tmp/sphere.log" || fail "pbd_sphere printed no summary: $(tail -3 "$tmp/sphere.log")"
+# The edit: stage 04 back to its stub; ./lab run rebuilds and stops at task 4.x, advising the reference
+# for 04 along with the 05 and 06 this build already uses.
+cp framework/stubs/04_distance/*.cpp exercises/04_distance/
+./lab run scenes/pbd_sphere.json --quiet >"$tmp/sphere.log" 2>&1
+code=$?
+[[ $code -eq 2 ]] && grep -q "not implemented: exercise 4\." "$tmp/sphere.log" && grep -q -- "./lab build --reference 04,05,06)" "$tmp/sphere.log" \
+  || fail "after editing stage 04, ./lab run: exit $code, $(tail -2 "$tmp/sphere.log")"
+rm -rf exercises && cp -a "$tmp/exercises.pristine" exercises || fail "restore the copy's exercises/"
+# Another compiler than the one that made the objects: CMake ignores them with a warning that says so.
+cp framework/reference/compiler.txt "$tmp/compiler.txt"
+sed -i 's/^compiler_version=.*/compiler_version=0.0.1/' framework/reference/compiler.txt
+cmake -S . -B "$tmp/other" -DCLOTHLAB_RENDER=OFF -DCLOTHLAB_REFERENCE_STAGES=05 >"$tmp/other.log" 2>&1 || { tail "$tmp/other.log"; fail "configure with another compiler's reference objects"; }
+cp "$tmp/compiler.txt" framework/reference/compiler.txt
+tr -s ' \n' ' ' <"$tmp/other.log" | grep -q "compiled by GNU 0.0.1 .* they are not used" && grep -q "stage 05 (05_bending) uses stage_05_exercises" "$tmp/other.log" \
+  || fail "reference objects of another compiler: no warning or not ignored: $(grep -A3 Warning "$tmp/other.log" | head -8)"
+rm -rf "$tmp/other"
 # Last, so that the checks above run even while a known leak waits to be removed.
 "$leak_check" "$root" "$tmp/copy" || fail "the copy gives away reference code (lines above)"
-echo "release copy builds, grades (0 points) and runs every scene up to 'not implemented'; no untracked file, no leak"
+echo "release copy builds, grades (0 points) and runs every scene up to 'not implemented'; with stages 01-04 done and the reference objects for 05-06 pbd_sphere runs, and an edit runs at once; no untracked file, no leak"

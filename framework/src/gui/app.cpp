@@ -14,6 +14,7 @@
 #include "clothlab/io/scene_json.h"
 #include "clothlab/render/overlay.h"
 #include "clothlab/sim/run.h"
+#include "../../app/stub_advice.h"
 
 #ifndef CLOTHLAB_STAGE_CODE
 #define CLOTHLAB_STAGE_CODE ""
@@ -503,6 +504,7 @@ void App::panelStages() {
             ImGui::PushStyleColor(ImGuiCol_Text, kRed);
             ImGui::TextWrapped("  %s", stub_hit_.c_str());
             ImGui::PopStyleColor();
+            ImGui::TextWrapped("%s", clothlab::cli::stubAdvice(stub_hit_).c_str());  // what to do, in this copy
         }
     }
 }
