@@ -8,19 +8,19 @@
 #include <sstream>
 
 #include "clothlab/io/scene_json.h"
+#include "clothlab/sim/run.h"
 #include "clothlab/sim/simulation.h"
 #include "clothlab/study/plot.h"
 
 namespace clothlab {
 namespace {
 
-/// The sag of one run: the drop of the lowest particle after `seconds` (NaN if the state blew up).
+/// The sag of one run: the drop of the lowest particle after `seconds` (NaN if the run was unstable).
 double sagOf(const std::string& file, std::vector<std::string> sets, double seconds) {
     auto sim = makeSimulation(loadScene(file, sets));
     const double start = sim->state().x.row(1).minCoeff();
     const long long steps = std::llround(seconds / sim->scene().solver.dt);
-    for (long long s = 0; s < steps; ++s) sim->step();
-    if (!sim->state().isFinite()) return std::numeric_limits<double>::quiet_NaN();
+    if (runSimulation(*sim, steps, steps).unstable) return std::numeric_limits<double>::quiet_NaN();
     return start - sim->state().x.row(1).minCoeff();
 }
 

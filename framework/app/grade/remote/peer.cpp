@@ -108,8 +108,7 @@ void Peer::handle(const Message& m) {
     try {
         Reader in(m.body, this);
         in.particles = particles;
-        const Handler handler = *h;  // the handler may register callbacks (and so move the table)
-        handler(in, out);
+        (*h)(in, out);  // may register callbacks: the deque keeps *h where it is
     } catch (const PeerFailure&) {
         throw;
     } catch (const ProtocolError&) {
@@ -183,8 +182,7 @@ void Peer::serveUntilClosed() {
 std::string Peer::disconnect(bool ended) {
     if (in_ >= 0) ::close(in_);
     if (out_ >= 0) ::close(out_);
-    in_ = out_ = -1;
-    callbacks_.clear();
+    in_ = out_ = -1;  // callbacks stay: the calls that registered them release them as they unwind
     buffered_.clear();
     used_ = 0;
     std::string how;

@@ -17,6 +17,7 @@
 #include <sys/types.h>
 
 #include <algorithm>
+#include <deque>
 #include <map>
 #include <string>
 #include <tuple>
@@ -87,7 +88,7 @@ private:
     int in_ = -1, out_ = -1;
     pid_t pid_ = -1;
     std::map<uint32_t, Handler> functions_;
-    std::vector<Callback> callbacks_;
+    std::deque<Callback> callbacks_;  ///< a deque: registering a callback moves none of the others
     std::string buffered_;  ///< bytes read, not yet taken (from used_ on)
     size_t used_ = 0;
 };

@@ -88,19 +88,13 @@ template <class F> void fields(F& f, CollisionConstraint& c) {
     f(c.i, c.q, c.n, c.start, c.vnBefore, c.friction, c.restitution);
 }
 
-template <class T> struct IsStruct : std::false_type {};
-template <> struct IsStruct<Spring> : std::true_type {};
-template <> struct IsStruct<SpringGroup> : std::true_type {};
-template <> struct IsStruct<ClothSprings> : std::true_type {};
-template <> struct IsStruct<Collider> : std::true_type {};
-template <> struct IsStruct<PbdParticles> : std::true_type {};
-template <> struct IsStruct<PbdCallbacks> : std::true_type {};
-template <> struct IsStruct<DistanceCorrection> : std::true_type {};
-template <> struct IsStruct<BendingGradients> : std::true_type {};
-template <> struct IsStruct<BendingCorrection> : std::true_type {};
-template <> struct IsStruct<BendingStencil> : std::true_type {};
-template <> struct IsStruct<CollisionConstraint> : std::true_type {};
-template <> struct IsStruct<DistanceLink> : std::true_type {};
+/// A struct crosses the wire field by field: it is one that has a fields() above.
+struct FieldProbe {
+    template <class... A> void operator()(A&...) {}
+};
+template <class T, class = void> struct IsStruct : std::false_type {};
+template <class T>
+struct IsStruct<T, std::void_t<decltype(fields(std::declval<FieldProbe&>(), std::declval<T&>()))>> : std::true_type {};
 
 // ---- writing ----
 template <class T> void put(Writer& w, const T& v);
