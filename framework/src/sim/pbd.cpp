@@ -6,6 +6,7 @@
 #include "clothlab/core/grid.h"
 #include "clothlab/core/input_error.h"
 #include "clothlab/core/topology.h"
+#include "clothlab/sim/colliders.h"
 #include "clothlab/sim/xpbd.h"
 
 namespace clothlab {
@@ -155,9 +156,7 @@ double PbdSimulation::maxPenetration() const {
     double m = 0.0;
     for (int i = 0; i < P_.size(); ++i)
         for (const Collider& c : scene_.colliders) {
-            const Vec3 x = P_.x.col(i);
-            const double dist = c.type == Collider::Type::Plane ? (x - c.point).dot(c.normal) : (x - c.point).norm() - c.radius;
-            m = std::max(m, h - dist);
+            m = std::max(m, h - colliderDistance(c, P_.x.col(i)));
         }
     return m;
 }
