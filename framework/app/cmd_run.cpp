@@ -17,7 +17,7 @@ void addRunCommand(CLI::App& app, int& exit_code) {
         std::vector<std::string> sets;
         long long steps = -1, every = 0;
         double seconds = -1;
-        bool quiet = false;
+        bool quiet = false, strict = false;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("run", "Run a scene headless and print the run report");
@@ -30,6 +30,8 @@ void addRunCommand(CLI::App& app, int& exit_code) {
     cmd->add_option("--state", opt->state, "Start from the positions and velocities of a state CSV (from --dump or state.csv); time starts at 0");
     cmd->add_option("--out", opt->out, "Folder for report.csv, summary.json and state.csv");
     cmd->add_flag("--quiet", opt->quiet, "Print only the summary");
+    cmd->add_flag("--strict", opt->strict,
+                  "A warning (not converged, penetration, fell through a collider, energy growth) is an error: exit 3 like a blow-up");
     cmd->callback([opt, &exit_code] {
         const Scene scene = loadScene(opt->scene, opt->sets);
         long long steps = opt->steps >= 0 ? opt->steps : scene.solver.steps;
@@ -65,6 +67,11 @@ void addRunCommand(CLI::App& app, int& exit_code) {
         if (!opt->dump.empty()) writeStateCsv(opt->dump, sim->state());
         if (result.unstable) {
             std::cerr << "error: " << scene.file << ": solver: " << result.message << "\n";
+            exit_code = Unstable;
+        } else if (opt->strict && !result.warnings.empty()) {
+            std::cerr << "error: " << scene.file << ": solver: --strict: " << warningText(result.warnings.front(), scene)
+                      << (result.warnings.size() > 1 ? " (and " + std::to_string(result.warnings.size() - 1) + " more warnings in the summary)" : "")
+                      << "\n";
             exit_code = Unstable;
         }
     });

@@ -12,9 +12,12 @@
 // edge (its top particle stays ~1 m up, "lies flat on the ground" does not hold). Likewise removing
 // "provot" from mfn_provot.json (strain 0.3 > 10 %) or the "wind" from pbd_flag.json (no drift along
 // the wind) makes that scene's test fail; SceneClaims.ChecksCanFail plants such wrong scenes in memory
-// (the same checks, a violated claim) on every run.
+// (the same checks, a violated claim) on every run. Every scene's run also goes through the run checks
+// of run.h (RunChecks): none of their warnings may fire on a shipped scene (no false alarms), and
+// SceneClaims.RunChecksFire shows each of them firing where the result is not a result.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -66,17 +69,25 @@ struct Run {
     double belowPlane = 0;          // largest depth below a plane, m
     double maxStrainEnd = 0;        // max edge strain at the end (1)
     std::vector<Vec3> comPath;      // centre of mass after every step
+    std::vector<std::string> warnings;  // the run checks' warnings (run.h: RunChecks): a shipped scene has none
+    double maxRmsStrain = 0;        // largest RMS edge strain over the run (1), for the margin to the bound
+    double maxEnergyGrowth = -INFINITY;  // largest (E - E0) / E_scale over the run
+    double worstPenetration = 0;    // RunChecks::worstPenetration(), m
 };
 
 Run runScene(const Scene& scene, double seconds) {
     auto sim = makeSimulation(scene);
     Run r;
     r.start = sim->state();
+    RunChecks checks(*sim);
+    const double e0 = sim->energy(), eScale = energyScale(*sim);
     const long long steps = std::llround(seconds / scene.solver.dt);
     for (long long n = 1; n <= steps; ++n) {
-        r.unstable = stepAndCheck(*sim, n);
+        r.unstable = checks.step(*sim, n);
         if (!r.unstable.empty()) break;
         const State& s = sim->state();
+        r.maxRmsStrain = std::max(r.maxRmsStrain, sim->strain().rms);
+        r.maxEnergyGrowth = std::max(r.maxEnergyGrowth, (sim->energy() - e0) / eScale);
         const Vec3 com = centreOfMass(s);
         r.comPath.push_back(com);
         r.lowestCom = std::min(r.lowestCom, com.y());
@@ -92,6 +103,9 @@ Run runScene(const Scene& scene, double seconds) {
     }
     r.end = sim->state();
     r.maxStrainEnd = sim->strain().max;
+    checks.finish(*sim);
+    for (const RunWarning& w : checks.warnings()) r.warnings.push_back(warningText(w, scene));
+    r.worstPenetration = checks.worstPenetration();
     return r;
 }
 
@@ -334,6 +348,12 @@ void checkScene(const std::string& name) {
     const Run r = runScene(scene, it->second.seconds);
     Verdict v;
     it->second.check(scene, r, v);
+    // No false alarms: the run checks (not converged, penetration, fell through, energy growth) stay
+    // silent on every shipped scene; the margins to their bounds are printed.
+    for (const std::string& w : r.warnings) v.require(false, "no run-check warning", w);
+    std::printf("%s: max RMS strain %.3g (bound %.3g), max energy growth %.3g E_scale (bound %.3g), worst penetration %.3g h (bound %.3g h)\n",
+                name.c_str(), r.maxRmsStrain, kNotConvergedRmsStrain, r.maxEnergyGrowth, kEnergyGrowthBound,
+                scene.solver.thickness > 0 ? r.worstPenetration / scene.solver.thickness : 0.0, kPenetrationFactor);
     EXPECT_TRUE(v.failed.empty()) << "scenes/" << name << ".json claims \"" << scene.description << "\", but after "
                                   << it->second.seconds << " s:" << failures(v);
 }

@@ -48,12 +48,21 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
                   r.steps, sim.state().t, r.wall, per_step * 1e6);
     out << buf;
     if (r.unstable && !r.rows.empty())
-        out << "  (the state is no longer finite: metrics of the last report row, step " << r.rows.back().step << ")\n";
+        out << "  (stopped: " << r.message << "; the metrics below are of the last report row, step " << r.rows.back().step << ")\n";
     if (!r.rows.empty())
         for (const Metric& m : r.rows.back().metrics) {
             std::snprintf(buf, sizeof buf, "  %-22s %14.6e %s\n", m.name.c_str(), m.value, m.unit.c_str());
             out << buf;
         }
+    if (!sim.scene().colliders.empty()) {
+        std::snprintf(buf, sizeof buf, "  %-22s %14.6e %s (over the whole run, at step %lld)\n", "worst_penetration", r.worst_penetration,
+                      "m", r.worst_penetration_step);
+        out << buf;
+    }
+    if (!r.warnings.empty()) {
+        out << "warnings: this result is not a result (" << r.warnings.size() << "):\n";
+        for (const RunWarning& w : r.warnings) out << "  warning: " << warningText(w, sim.scene()) << "\n";
+    }
     double total = 0.0;
     for (const auto& p : sim.timer().passes()) total += p.seconds;
     out << "passes that ran (wall time):\n";
@@ -87,10 +96,19 @@ void writeSummaryJson(const std::string& path, const Simulation& sim, const RunR
     j["simulated_time"] = sim.state().t;
     j["wall_time"] = r.wall;
     j["unstable"] = r.unstable;
+    j["cause"] = causeName(r.cause);
     if (r.unstable) j["message"] = r.message;
     j["metrics"] = nlohmann::json::object();
     if (!r.rows.empty())
         for (const Metric& m : r.rows.back().metrics) j["metrics"][m.name] = {{"value", m.value}, {"unit", m.unit}};
+    if (!sim.scene().colliders.empty())
+        j["metrics"]["worst_penetration"] = {{"value", r.worst_penetration}, {"unit", "m"}, {"step", r.worst_penetration_step}};
+    j["warnings"] = nlohmann::json::array();
+    for (const RunWarning& w : r.warnings) {
+        nlohmann::json x = {{"kind", warningName(w.kind)}, {"step", w.step}, {"t", w.t}, {"value", w.value}, {"message", warningText(w, sim.scene())}};
+        if (w.collider >= 0) x["collider"] = w.collider, x["particle"] = w.particle, x["particles"] = w.count;
+        j["warnings"].push_back(x);
+    }
     j["passes"] = nlohmann::json::array();
     for (const auto& p : sim.timer().passes())
         j["passes"].push_back({{"name", p.name}, {"seconds", p.seconds}, {"calls", p.calls}});

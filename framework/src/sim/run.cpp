@@ -1,57 +1,287 @@
 #include "clothlab/sim/run.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <sstream>
 
-namespace clothlab {
+#include "clothlab/sim/colliders.h"
 
-std::string instabilityReason(const State& s, double bound) {
-    if (!s.x.allFinite()) return "position is NaN or infinite";
-    if (!s.v.allFinite()) return "velocity is NaN or infinite";
-    if (s.x.size() > 0 && s.x.colwise().norm().maxCoeff() > bound) {
-        std::ostringstream m;
-        m << "a particle left the region |x| < " << bound << " m (report.blowup)";
-        return m.str();
+namespace clothlab {
+namespace {
+
+std::string num(double x, int precision = 3) {
+    std::ostringstream s;
+    s.precision(precision);
+    s << x;
+    return s.str();
+}
+
+std::string percent(double fraction) { return num(100.0 * fraction) + " %"; }
+
+std::string colliderName(const Scene& scene, int i) {
+    std::string type = "collider";
+    if (i >= 0 && i < static_cast<int>(scene.colliders.size()))
+        type = scene.colliders[static_cast<size_t>(i)].type == Collider::Type::Plane ? "plane" : "sphere";
+    return "collider " + std::to_string(i) + " (" + type + ")";
+}
+
+std::string since(const RunWarning& w) { return "step " + std::to_string(w.step) + " (t = " + num(w.t, 4) + " s)"; }
+
+double fellThroughDepth(const Scene& s) { return std::max(kFellThroughFactor * s.solver.thickness, kFellThroughMinDepth); }
+
+// The scene means an inextensible cloth: distance constraints at PBD stiffness 1 or XPBD compliance 0.
+bool meantInextensible(const Scene& s) {
+    if (s.model != Model::Cloth || !isPositionBased(s.solver.method) || !s.constraints.distance.enabled) return false;
+    return s.solver.method == Method::Pbd ? s.constraints.distance.stiffness >= 1.0 : s.constraints.distance.compliance == 0.0;
+}
+
+}  // namespace
+
+const char* causeName(StopCause c) {
+    switch (c) {
+        case StopCause::None: return "none";
+        case StopCause::PositionNotFinite: return "position_not_finite";
+        case StopCause::VelocityNotFinite: return "velocity_not_finite";
+        case StopCause::LeftRegion: return "left_region";
+        case StopCause::SolverFailure: return "solver_failure";
+    }
+    return "none";
+}
+
+const char* warningName(WarningKind k) {
+    switch (k) {
+        case WarningKind::NotConverged: return "not_converged";
+        case WarningKind::Penetration: return "penetration";
+        case WarningKind::FellThrough: return "fell_through";
+        case WarningKind::EnergyGrowth: return "energy_growth";
     }
     return "";
 }
 
-std::string stepAndCheck(Simulation& sim, long long step, double bound) {
-    std::string why;
+std::string warningText(const RunWarning& w, const Scene& s) {
+    const SolverSpec& sv = s.solver;
+    const std::string h = num(sv.thickness) + " m";
+    std::ostringstream m;
+    switch (w.kind) {
+        case WarningKind::NotConverged:
+            m << "not converged: the RMS edge strain has stayed above " << percent(kNotConvergedRmsStrain) << " since " << since(w)
+              << " (last " << percent(w.value) << ", max " << percent(w.extra) << "): the distance constraints are far from solved, "
+              << "this is a stretching sheet, not the inextensible cloth the scene describes; more solver.iterations (now "
+              << sv.iterations << "), solver.substeps (now " << sv.substeps << ")"
+              << (sv.method == Method::Pbd ? ", solver.method=xpbd" : "") << " or a smaller solver.dt would help";
+            break;
+        case WarningKind::Penetration:
+            m << "penetration: " << w.count << (w.count == 1 ? " particle" : " particles") << " more than " << num(kPenetrationFactor - 1)
+              << " h inside " << colliderName(s, w.collider) << " (thickness h = " << h << ", penetration h - d > " << num(kPenetrationFactor)
+              << " h), the first (particle " << w.particle << ") at " << since(w) << ", deepest penetration " << num(w.value)
+              << " m; more solver.iterations or solver.substeps, or a smaller solver.dt would help";
+            break;
+        case WarningKind::FellThrough:
+            m << "fell through: " << w.count << (w.count == 1 ? " particle" : " particles") << " passed into or through "
+              << colliderName(s, w.collider) << ", the first (particle " << w.particle << ") at " << since(w) << ": its path in one step reached "
+              << num(w.value) << " m inside (more than " << num(fellThroughDepth(s)) << " m = max(" << num(kFellThroughFactor) << " h, "
+              << num(kFellThroughMinDepth) << " m))";
+            if (!isPositionBased(sv.method))
+                m << "; method " << methodName(sv.method) << " ignores colliders (use pbd or xpbd)";
+            else
+                m << "; a smaller solver.dt (now " << num(sv.dt) << " s), more solver.substeps or a larger solver.thickness would help";
+            break;
+        case WarningKind::EnergyGrowth:
+            m << "energy grew: E - E(0) exceeded " << num(kEnergyGrowthBound) << " E_scale at " << since(w) << " and reached " << num(w.value)
+              << " E_scale (E_scale = max(|E(0)|, m g L)); without an energy source the energy must not rise: a smaller solver.dt"
+              << (isPositionBased(sv.method) ? " or more solver.iterations" : " or a symplectic or implicit method") << " would help";
+            break;
+    }
+    return m.str();
+}
+
+StopCause instabilityCause(const State& s, double bound) {
+    if (!s.x.allFinite()) return StopCause::PositionNotFinite;
+    if (!s.v.allFinite()) return StopCause::VelocityNotFinite;
+    if (s.x.size() > 0 && s.x.colwise().norm().maxCoeff() > bound) return StopCause::LeftRegion;
+    return StopCause::None;
+}
+
+std::string stopReason(StopCause c, double bound, const std::string& detail) {
+    switch (c) {
+        case StopCause::None: return "";
+        case StopCause::PositionNotFinite: return "position is NaN or infinite";
+        case StopCause::VelocityNotFinite: return "velocity is NaN or infinite";
+        case StopCause::LeftRegion:
+            return "a particle left the region |x| < " + num(bound, 6) + " m (report.blowup): the state is finite but has blown up";
+        case StopCause::SolverFailure: return detail.empty() ? "the solver could not take the step" : detail;
+    }
+    return "";
+}
+
+std::string instabilityReason(const State& s, double bound) { return stopReason(instabilityCause(s, bound), bound); }
+
+std::string stepAndCheck(Simulation& sim, long long step, double bound, StopCause* cause) {
+    StopCause c = StopCause::None;
+    std::string detail;
     try {
         sim.step();
-        why = instabilityReason(sim.state(), bound);
+        c = instabilityCause(sim.state(), bound);
     } catch (const SolverFailure& e) {
-        why = e.what();
+        c = StopCause::SolverFailure;
+        detail = e.what();
     }
-    if (why.empty()) return why;
+    if (cause) *cause = c;
+    if (c == StopCause::None) return "";
     std::ostringstream m;
-    m << "unstable at step " << step << " (t = " << sim.state().t << " s): " << why;
+    m << "unstable at step " << step << " (t = " << sim.state().t << " s): " << stopReason(c, bound, detail);
     return m.str();
+}
+
+double energyScale(const Simulation& sim) {
+    const State& s = sim.state();
+    const double extent = s.size() > 0 ? (s.x.rowwise().maxCoeff() - s.x.rowwise().minCoeff()).norm() : 0.0;
+    double mass = 0.0;
+    for (int i = 0; i < s.size(); ++i) mass += s.w[i] > 0.0 ? 1.0 / s.w[i] : 0.0;
+    return std::max({std::abs(sim.energy()), mass * sim.scene().forces.gravity.norm() * extent, 1e-12});
+}
+
+double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth) {
+    const double len = (b - a).norm();
+    double lowest = colliderDistance(c, a), t = 0.0;
+    while (lowest >= -depth && t < len) {
+        t = std::min(len, t + std::max({colliderDistance(c, a + (t / len) * (b - a)) + depth, 0.25 * depth, len / 64.0}));
+        lowest = std::min(lowest, colliderDistance(c, a + (t / len) * (b - a)));
+    }
+    return lowest;
+}
+
+RunChecks::RunChecks(const Simulation& sim) {
+    const Scene& sc = sim.scene();
+    const State& s = sim.state();
+    e0_ = sim.energy();
+    eScale_ = energyScale(sim);
+    checkEnergy_ = sc.forces.wind.squaredNorm() == 0.0;
+    checkStrain_ = meantInextensible(sc);
+    const double h = sc.solver.thickness;
+    for (const Collider& c : sc.colliders) {
+        std::vector<char> outside(static_cast<size_t>(s.size()));
+        for (int i = 0; i < s.size(); ++i) {
+            outside[static_cast<size_t>(i)] = s.w[i] > 0.0 && colliderDistance(c, s.x.col(i)) >= -h;
+            worstPenetration_ = std::max(worstPenetration_, h - colliderDistance(c, s.x.col(i)));
+        }
+        watch_.push_back(std::move(outside));
+        penetrated_.emplace_back(static_cast<size_t>(s.size()), 0);
+    }
+}
+
+RunWarning& RunChecks::warn(WarningKind k, long long step, double t, int collider) {
+    for (RunWarning& w : warnings_)
+        if (w.kind == k && w.collider == collider) return w;
+    RunWarning w;
+    w.kind = k, w.step = step, w.t = t, w.collider = collider;
+    warnings_.push_back(w);
+    return warnings_.back();
+}
+
+void RunChecks::checkColliders(const Simulation& sim, long long step) {
+    const Scene& sc = sim.scene();
+    const State& s = sim.state();
+    const double h = sc.solver.thickness, deep = fellThroughDepth(sc);
+    for (size_t k = 0; k < sc.colliders.size(); ++k) {
+        const Collider& c = sc.colliders[k];
+        const int ck = static_cast<int>(k);
+        for (int i = 0; i < s.size(); ++i) {
+            const double d = colliderDistance(c, s.x.col(i));
+            if (h - d > worstPenetration_) worstPenetration_ = h - d, worstPenetrationStep_ = step;
+            if (!watch_[k][static_cast<size_t>(i)]) continue;
+            if (h - d > kPenetrationFactor * h) {
+                RunWarning& w = warn(WarningKind::Penetration, step, s.t, ck);
+                if (!penetrated_[k][static_cast<size_t>(i)]) penetrated_[k][static_cast<size_t>(i)] = 1, w.count++;
+                if (w.particle < 0) w.particle = i;
+                w.value = std::max(w.value, h - d);
+            }
+            const double lowest = pathDistance(c, xOld_.col(i), s.x.col(i), deep);
+            if (lowest < -deep) {
+                RunWarning& w = warn(WarningKind::FellThrough, step, s.t, ck);
+                if (w.count++ == 0) w.particle = i;
+                w.value = std::max(w.value, -lowest);
+                watch_[k][static_cast<size_t>(i)] = 0;  // counted once
+            }
+        }
+    }
+}
+
+void RunChecks::checkStrain(const Simulation& sim, long long step) {
+    const EdgeStrain e = sim.strain();
+    if (!(e.rms > kNotConvergedRmsStrain)) {
+        strainSince_ = 0;
+        return;
+    }
+    if (strainSince_ == 0) strainSince_ = step, strainSinceT_ = sim.state().t;
+    bool fired = false;
+    for (RunWarning& w : warnings_)
+        if (w.kind == WarningKind::NotConverged) w.value = e.rms, w.extra = e.max, fired = true;
+    if (!fired && sim.state().t - strainSinceT_ >= kNotConvergedDuration - 1e-12) {
+        RunWarning& w = warn(WarningKind::NotConverged, strainSince_, strainSinceT_);
+        w.value = e.rms, w.extra = e.max;
+    }
+}
+
+std::string RunChecks::step(Simulation& sim, long long step) {
+    if (!watch_.empty()) xOld_ = sim.state().x;
+    const std::string stop = stepAndCheck(sim, step, sim.scene().report.blowup, &cause_);
+    if (!stop.empty()) return stop;
+    if (!watch_.empty()) checkColliders(sim, step);
+    if (checkStrain_) checkStrain(sim, step);
+    if (checkEnergy_) {
+        const double growth = (sim.energy() - e0_) / eScale_;
+        if (growth > kEnergyGrowthBound) {
+            RunWarning& w = warn(WarningKind::EnergyGrowth, step, sim.state().t);
+            w.value = std::max(w.value, growth);
+        }
+    }
+    return "";
+}
+
+void RunChecks::finish(const Simulation& sim) {
+    if (strainSince_ == 0) return;
+    for (const RunWarning& w : warnings_)
+        if (w.kind == WarningKind::NotConverged) return;
+    const EdgeStrain e = sim.strain();
+    RunWarning& w = warn(WarningKind::NotConverged, strainSince_, strainSinceT_);
+    w.value = e.rms, w.extra = e.max;
 }
 
 RunResult runSimulation(Simulation& sim, long long steps, long long every,
                         const std::function<void(const ReportRow&)>& on_row) {
     RunResult result;
+    RunChecks checks(sim);
     const auto t0 = std::chrono::steady_clock::now();
     auto record = [&] {
         ReportRow row{result.steps, sim.state().t, result.wall, sim.metrics()};
         if (on_row) on_row(row);
         result.rows.push_back(std::move(row));
     };
+    auto done = [&] {
+        result.cause = checks.cause();
+        result.warnings = checks.warnings();
+        std::stable_sort(result.warnings.begin(), result.warnings.end(),
+                         [](const RunWarning& a, const RunWarning& b) { return a.kind < b.kind; });
+        result.worst_penetration = checks.worstPenetration();
+        result.worst_penetration_step = checks.worstPenetrationStep();
+        return result;
+    };
     record();
     while (result.steps < steps) {
-        const std::string unstable = stepAndCheck(sim, result.steps + 1);
+        const std::string unstable = checks.step(sim, result.steps + 1);
         ++result.steps;
         result.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (!unstable.empty()) {
             result.unstable = true;
             result.message = unstable;
-            return result;  // no metrics of a broken state
+            return done();  // no metrics of a broken state
         }
         if (result.steps % every == 0 || result.steps == steps) record();
     }
-    return result;
+    checks.finish(sim);
+    return done();
 }
 
 }  // namespace clothlab

@@ -36,14 +36,12 @@ std::string fmt(double x, int precision = 3) {
 StabilityVerdict classifyStability(const Scene& scene, const StabilityCriteria& criteria) {
     StabilityVerdict v;
     auto sim = makeSimulation(scene);
-    // Scales: extent L of the initial positions, total free mass, initial energy.
+    // Scales: extent L of the initial positions, initial energy, E_scale (run.h: energyScale()).
     const State& s0 = sim->state();
     const double extent = s0.size() > 0 ? (s0.x.rowwise().maxCoeff() - s0.x.rowwise().minCoeff()).norm() : 0.0;
-    double mass = 0.0;
-    for (int i = 0; i < s0.size(); ++i) mass += s0.w[i] > 0.0 ? 1.0 / s0.w[i] : 0.0;
     const double bound = 1e3 * (extent + 1.0);  // a blow-up long before the numbers overflow
     const double e0 = sim->energy();
-    const double e_scale = std::max({std::abs(e0), mass * scene.forces.gravity.norm() * extent, 1e-12});
+    const double e_scale = energyScale(*sim);
     const long long check_every = std::max<long long>(1, criteria.steps / 100);
     auto unstable = [&](const std::string& why) {
         v.stable = false;

@@ -14,15 +14,19 @@ void printReportHeader(std::ostream& out, const ReportRow& first);
 /// Prints one report row: step, simulated time, wall time, every metric.
 void printReportRow(std::ostream& out, const ReportRow& row);
 
-/// Prints the summary: steps, simulated and wall time, time per step, and the table of
-/// passes that ran (wall time, calls, share).
+/// Prints the summary: steps, simulated and wall time, time per step, why the run stopped (if it
+/// did), the final metrics, the worst penetration over the whole run (scenes with colliders), every
+/// warning (warningText(): what, since which step, what would help) and the table of passes that
+/// ran (wall time, calls, share).
 void printSummary(std::ostream& out, const Simulation& sim, const RunResult& result);
 
 /// Writes the report rows as CSV with units in the header: `step,t [s],wall [s],<metric> [<unit>],...`.
 /// @throws InputError if the file cannot be written
 void writeReportCsv(const std::string& path, const RunResult& result);
 
-/// Writes the summary (scene, method, dt, steps, wall time, final metrics, pass timings) as JSON.
+/// Writes the summary (scene, method, dt, steps, wall time, `cause` of a stop (causeName()), final
+/// metrics with `worst_penetration` {value, unit, step}, `warnings` [{kind, step, t, value, message,
+/// collider, particle, particles}], pass timings) as JSON.
 /// @throws InputError if the file cannot be written
 void writeSummaryJson(const std::string& path, const Simulation& sim, const RunResult& result);
 

@@ -1,5 +1,7 @@
 /// @file run.h
-/// @brief Running a simulation for a number of steps, with instability detection and report rows.
+/// @brief Running a simulation for a number of steps: why a run stopped, when its result is not a
+/// result (warnings), and the report rows. The one place every program (run, render, app, studies)
+/// takes its messages from.
 #pragma once
 #include <functional>
 #include <string>
@@ -17,18 +19,81 @@ struct ReportRow {
     std::vector<Metric> metrics;  ///< the scene's metrics at this time
 };
 
-/// What runSimulation() did.
-struct RunResult {
-    long long steps = 0;          ///< steps done
-    double wall = 0.0;            ///< wall time of the steps, s
-    bool unstable = false;        ///< stopped because the state blew up
-    std::string message;          ///< "unstable at step N (t = ...): reason" when unstable
-    std::vector<ReportRow> rows;  ///< one row every `every` steps and one at the end
+/// Why a run stopped before its last step (one message per cause: stopReason()).
+enum class StopCause {
+    None,               ///< it did not stop
+    PositionNotFinite,  ///< a position is NaN or infinite
+    VelocityNotFinite,  ///< a velocity is NaN or infinite
+    LeftRegion,         ///< a particle left the ball |x| < report.blowup (finite, but blown up)
+    SolverFailure       ///< the method could not take the step (SolverFailure, e.g. implicit Euler's solve)
 };
 
-/// Why a state can no longer be trusted, or "" when it can: a position or velocity is NaN or
-/// infinite, or a particle left the ball |x| < bound (report.blowup). The one instability check of
-/// every program (run, render, app, studies).
+/// What makes a finished run's numbers no result (RunChecks; `clothlab run --strict`: exit 3).
+/// In the order of severity, the order of RunResult::warnings.
+enum class WarningKind {
+    FellThrough,   ///< a particle's path in one step reached kFellThroughFactor · h inside a collider
+    NotConverged,  ///< RMS edge strain above kNotConvergedRmsStrain for a cloth meant to be inextensible
+    Penetration,   ///< a particle more than (kPenetrationFactor − 1) h inside a collider at the end of a step
+    EnergyGrowth   ///< the energy rose above E(0) by more than kEnergyGrowthBound · E_scale
+};
+
+/// RMS edge strain (1) above which a cloth meant to be inextensible (distance constraints with PBD
+/// stiffness 1 or XPBD compliance 0) is "not converged": woven fabric stretches by a few per cent
+/// under its own weight; 10 % RMS means the constraint solve has not caught up.
+constexpr double kNotConvergedRmsStrain = 0.10;
+/// Simulated time the RMS strain must stay above its bound before NotConverged fires (a transient
+/// of an impact is no verdict), s; a run that ends above the bound fires as well.
+constexpr double kNotConvergedDuration = 0.1;
+/// Penetration warning: at the end of a step a particle is inside a collider, d < −(factor − 1) h,
+/// i.e. its penetration h − d exceeds factor · h (thickness h = solver.thickness). PBD projects the
+/// distance constraints after the collisions in every iteration, so a resting particle may end up to
+/// about h inside the surface; twice that is no longer contact.
+constexpr double kPenetrationFactor = 3.0;
+/// Fell-through depth D = max(factor · h, kFellThroughMinDepth): see WarningKind::FellThrough.
+constexpr double kFellThroughFactor = 4.0;
+/// The smallest fell-through depth D (for h = 0), m.
+constexpr double kFellThroughMinDepth = 1e-3;
+/// EnergyGrowth bound, in units of energyScale(); scenes with wind (energy input) are not checked.
+constexpr double kEnergyGrowthBound = 0.1;
+
+/// One warning of a run: what, where it started, how bad.
+struct RunWarning {
+    WarningKind kind = WarningKind::NotConverged;  ///< what
+    long long step = 0;      ///< the step where it started (1 = the first step)
+    double t = 0.0;          ///< the simulated time at the end of that step, s
+    int collider = -1;       ///< Penetration, FellThrough: index into scene.colliders
+    int particle = -1;       ///< Penetration, FellThrough: the first particle
+    int count = 0;           ///< Penetration, FellThrough: particles affected so far
+    double value = 0.0;      ///< NotConverged: RMS strain (1) at the end; Penetration: deepest h − d (m);
+                             ///< FellThrough: deepest −d on a path (m); EnergyGrowth: largest (E − E0)/E_scale
+    double extra = 0.0;      ///< NotConverged: the max strain (1) at the end; else 0
+};
+
+/// The name of a stop cause or warning kind as in summary.json, e.g. "left_region", "fell_through".
+const char* causeName(StopCause c);
+/// @copydoc causeName(StopCause)
+const char* warningName(WarningKind k);
+
+/// The sentence for a warning: what happened, since which step, what would help. The one text the
+/// CLI summary, summary.json, the renderer and the app show.
+/// @param w      the warning
+/// @param scene  the scene it came from (collider types, thickness, the settings to change)
+std::string warningText(const RunWarning& w, const Scene& scene);
+
+/// Why a state can no longer be trusted: NaN/Inf position, NaN/Inf velocity, or a particle outside
+/// the ball |x| < bound; StopCause::None when it can.
+/// @param s      the state
+/// @param bound  radius of the region the particles must stay in, m
+StopCause instabilityCause(const State& s, double bound);
+
+/// The one reason text of a stop cause, e.g. "a particle left the region |x| < 1e+06 m
+/// (report.blowup); the state is finite but blown up". For SolverFailure: `detail` (the exception's text).
+/// @param c       the cause (not None)
+/// @param bound   the region's radius, m (LeftRegion)
+/// @param detail  the solver's own message (SolverFailure)
+std::string stopReason(StopCause c, double bound, const std::string& detail = "");
+
+/// stopReason(instabilityCause(s, bound), bound), or "" when the state can be trusted.
 /// @param s      the state
 /// @param bound  radius of the region the particles must stay in, m
 std::string instabilityReason(const State& s, double bound);
@@ -39,7 +104,8 @@ std::string instabilityReason(const State& s, double bound);
 /// @param sim    the simulation
 /// @param step   the number of this step (1 for the first), for the message
 /// @param bound  radius of the region the particles must stay in, m
-std::string stepAndCheck(Simulation& sim, long long step, double bound);
+/// @param cause  if not null, receives the cause (None when the step went well)
+std::string stepAndCheck(Simulation& sim, long long step, double bound, StopCause* cause = nullptr);
 
 /// stepAndCheck() with the scene's own bound, report.blowup.
 /// @param sim   the simulation
@@ -48,8 +114,84 @@ inline std::string stepAndCheck(Simulation& sim, long long step) {
     return stepAndCheck(sim, step, sim.scene().report.blowup);
 }
 
-/// Steps `steps` times (or until the state turns NaN/Inf or leaves the ball of radius
-/// scene.report.blowup), recording a report row every `every` steps.
+/// Energy scale of a simulation, J: \f$ E_{scale} = \max(|E(0)|,\ m_{free}\,|g|\,L,\ 10^{-12}\,\mathrm{J}) \f$
+/// with the free mass m_free (kg) and the extent L of the current positions (m). Taken at t = 0.
+/// @param sim  the simulation (its current state)
+double energyScale(const Simulation& sim);
+
+/// Lowest signed distance d (m) of a collider along the segment a → b, found by stepping with the
+/// distance bound (colliderDistance() is 1-Lipschitz: within |d + depth| of a point nothing is
+/// deeper than −depth); stops early once below −depth. Exact to 0.25 depth, at most ~64 evaluations.
+/// @param c      the collider
+/// @param a      start of the path, m
+/// @param b      end of the path, m
+/// @param depth  the depth of interest D > 0, m
+double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth);
+
+/// The checks of a run beside the step: the stop causes of stepAndCheck() and, without stopping,
+/// the warnings (WarningKind) with the step where each started, and the worst penetration of the
+/// whole run. One object per run; step() in place of sim.step().
+///
+/// Fell through: a free particle that was outside a collider, or within its thickness band
+/// (d ≥ −h), at t = 0 and has not fallen through it yet, whose straight path x_old → x_new in one
+/// step reaches d < −D, D = max(kFellThroughFactor h, kFellThroughMinDepth) (pathDistance()).
+class RunChecks {
+public:
+    /// Takes the reference values from the simulation's current state: E(0), E_scale, which
+    /// particles start outside which collider.
+    /// @param sim  the simulation, before its first step
+    explicit RunChecks(const Simulation& sim);
+
+    /// One step of `sim` with every check: "" or the stop message of stepAndCheck().
+    /// @param sim   the simulation given to the constructor
+    /// @param step  the number of this step (1 for the first)
+    std::string step(Simulation& sim, long long step);
+    /// Ends the run: a NotConverged stretch still above the bound at the end fires now.
+    /// @param sim  the simulation
+    void finish(const Simulation& sim);
+
+    /// Why the run stopped (None: it did not).
+    StopCause cause() const { return cause_; }
+    /// The warnings so far, in the order they fired.
+    const std::vector<RunWarning>& warnings() const { return warnings_; }
+    /// Largest penetration max(0, h − d) over every step end, particle and collider so far, m.
+    double worstPenetration() const { return worstPenetration_; }
+    /// The step at which worstPenetration() was reached (0: the initial state or none).
+    long long worstPenetrationStep() const { return worstPenetrationStep_; }
+
+private:
+    RunWarning& warn(WarningKind k, long long step, double t, int collider = -1);
+    void checkColliders(const Simulation& sim, long long step);
+    void checkStrain(const Simulation& sim, long long step);
+
+    Matrix3X xOld_;                        ///< positions before the step, m
+    std::vector<std::vector<char>> watch_; ///< per collider and particle: outside at t = 0, not fallen yet
+    std::vector<std::vector<char>> penetrated_;  ///< per collider and particle: counted in the Penetration warning
+    std::vector<RunWarning> warnings_;
+    StopCause cause_ = StopCause::None;
+    double e0_ = 0.0, eScale_ = 1.0;       ///< E(0) and energyScale(), J
+    bool checkEnergy_ = true, checkStrain_ = false;
+    long long strainSince_ = 0;            ///< first step of the current stretch above the strain bound (0: none)
+    double strainSinceT_ = 0.0;            ///< its time, s
+    double worstPenetration_ = 0.0;
+    long long worstPenetrationStep_ = 0;
+};
+
+/// What runSimulation() did.
+struct RunResult {
+    long long steps = 0;          ///< steps done
+    double wall = 0.0;            ///< wall time of the steps, s
+    bool unstable = false;        ///< stopped because the state blew up or the solver failed
+    StopCause cause = StopCause::None;  ///< why it stopped
+    std::string message;          ///< "unstable at step N (t = ...): reason" when unstable
+    std::vector<RunWarning> warnings;  ///< RunChecks::warnings() at the end, most severe kind first
+    double worst_penetration = 0.0;    ///< RunChecks::worstPenetration(), m (0 without colliders)
+    long long worst_penetration_step = 0;  ///< the step it was reached at
+    std::vector<ReportRow> rows;  ///< one row every `every` steps and one at the end
+};
+
+/// Steps `steps` times (or until the state turns NaN/Inf, leaves the ball of radius
+/// scene.report.blowup or the solver fails) with RunChecks, recording a report row every `every` steps.
 /// @param sim     the simulation
 /// @param steps   number of steps
 /// @param every   report interval in steps (≥ 1)
