@@ -121,7 +121,8 @@ double energyScale(const Simulation& sim);
 
 /// Lowest signed distance d (m) of a collider along the segment a → b, found by stepping with the
 /// distance bound (colliderDistance() is 1-Lipschitz: within |d + depth| of a point nothing is
-/// deeper than −depth); stops early once below −depth. Exact to 0.25 depth, at most ~64 evaluations.
+/// deeper than −depth); stops early once below −depth. Steps are at least max(0.25 depth, |b − a| / 64)
+/// long (at most ~64 evaluations), so a path is missed only if it stays below −depth for less than that.
 /// @param c      the collider
 /// @param a      start of the path, m
 /// @param b      end of the path, m

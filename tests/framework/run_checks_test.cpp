@@ -1,0 +1,148 @@
+// The run checks of run.h fire where a result is not a result, with the step where it started, and
+// say it in the one text every program shows. (That they stay silent on every shipped scene is
+// SceneClaims.* in scene_claims_test.cpp; the exit code 3 of --strict is in cli_test.sh.)
+#include <cmath>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "clothlab/io/report.h"
+#include "clothlab/io/scene_json.h"
+#include "clothlab/sim/colliders.h"
+#include "clothlab/sim/run.h"
+
+using namespace clothlab;
+
+namespace {
+
+Scene load(const std::string& name, const std::vector<std::string>& sets) {
+    return loadScene(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/" + name, sets);
+}
+
+const RunWarning* find(const RunResult& r, WarningKind k) {
+    for (const RunWarning& w : r.warnings)
+        if (w.kind == k) return &w;
+    return nullptr;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+// A 128 x 128 pbd_hanging with its default 10 iterations: the Gauss-Seidel sweep moves a correction
+// about one edge per iteration, so 10 iterations cannot hold 128 rows: the cloth stretches like a
+// falling sheet. The warning says so, with the step, and names what helps.
+TEST(RunChecks, NotConvergedFiresOnA128ClothWithTenIterations) {
+    auto sim = makeSimulation(load("pbd_hanging.json", {"cloth.nx=128", "cloth.ny=128"}));
+    const RunResult r = runSimulation(*sim, 40, 40);
+    ASSERT_FALSE(r.unstable) << r.message;
+    const RunWarning* w = find(r, WarningKind::NotConverged);
+    ASSERT_NE(w, nullptr) << "a 128^2 cloth at 10 iterations must be reported as not converged";
+    EXPECT_GT(w->value, kNotConvergedRmsStrain) << "the RMS strain it reports";
+    EXPECT_GE(w->step, 1);
+    EXPECT_LE(w->step, 40 - std::lround(kNotConvergedDuration / 0.01) + 1) << "it started early enough to have lasted 0.1 s";
+    const std::string text = warningText(*w, sim->scene());
+    EXPECT_TRUE(contains(text, "not converged") && contains(text, "step " + std::to_string(w->step)) &&
+                contains(text, "solver.iterations (now 10)") && contains(text, "xpbd"))
+        << text;
+    // The same cloth at 20 x 20 (the scene as shipped) converges: no warning.
+    auto small = makeSimulation(load("pbd_hanging.json", {}));
+    EXPECT_EQ(find(runSimulation(*small, 40, 40), WarningKind::NotConverged), nullptr);
+}
+
+// pbd_sphere at three times its step falls through the sphere. The step it is flagged at is the
+// first step in which some particle that started outside the sphere moved along a path reaching
+// D = max(4 h, 1 mm) inside it, found here by brute force (1000 points per path).
+TEST(RunChecks, FellThroughTheSphereAtThreeTimesItsStep) {
+    const Scene scene = load("pbd_sphere.json", {"solver.dt=0.03"});
+    const Collider& c = scene.colliders.at(0);
+    const double D = std::max(4 * scene.solver.thickness, 1e-3);
+    auto probe = makeSimulation(scene);
+    long long first = 0;
+    for (long long n = 1; n <= 300 && first == 0; ++n) {
+        const Matrix3X x0 = probe->state().x;
+        probe->step();
+        for (int i = 0; i < x0.cols() && first == 0; ++i)
+            for (int k = 0; k <= 1000 && first == 0; ++k) {
+                const Vec3 p = x0.col(i) + (k / 1000.0) * (probe->state().x.col(i) - x0.col(i));
+                if ((p - c.point).norm() - c.radius < -D) first = n;
+            }
+    }
+    ASSERT_GT(first, 0) << "the cloth must pass into the sphere at dt = 0.03 s";
+
+    auto sim = makeSimulation(scene);
+    const RunResult r = runSimulation(*sim, 300, 300);
+    const RunWarning* w = find(r, WarningKind::FellThrough);
+    ASSERT_NE(w, nullptr) << "falling through the sphere must be flagged";
+    EXPECT_EQ(w->step, first) << "the step where the first particle went through";
+    EXPECT_GT(w->count, 0);
+    EXPECT_EQ(r.warnings.front().kind, WarningKind::FellThrough) << "the most severe warning comes first";
+    const std::string text = warningText(*w, scene);
+    EXPECT_TRUE(contains(text, "fell through") && contains(text, "collider 0 (sphere)") &&
+                contains(text, "at step " + std::to_string(first)) && contains(text, "smaller solver.dt"))
+        << text;
+    // The worst penetration is over the whole run: the cloth ends far below the sphere, its last
+    // state touches nothing, but on its way through it was deep inside.
+    EXPECT_GT(r.worst_penetration, D) << "worst penetration over the run, m";
+    double last = 0;
+    for (int i = 0; i < sim->state().size(); ++i)
+        last = std::max(last, scene.solver.thickness - colliderDistance(c, sim->state().x.col(i)));
+    EXPECT_LT(last, r.worst_penetration) << "the last state alone hides it";
+    std::ostringstream summary;
+    printSummary(summary, *sim, r);
+    EXPECT_TRUE(contains(summary.str(), "worst_penetration") && contains(summary.str(), "warning: fell through")) << summary.str();
+}
+
+// One iteration per step cannot hold the cloth on the sphere: particles end steps deep inside it.
+TEST(RunChecks, PenetrationFiresWithOneIteration) {
+    const Scene scene = load("pbd_sphere.json", {"solver.iterations=1"});
+    auto sim = makeSimulation(scene);
+    const RunResult r = runSimulation(*sim, 300, 300);
+    const RunWarning* w = find(r, WarningKind::Penetration);
+    ASSERT_NE(w, nullptr);
+    EXPECT_GT(w->value, kPenetrationFactor * scene.solver.thickness);
+    EXPECT_LE(w->value, r.worst_penetration) << "the run's worst penetration includes the particles that fell through";
+}
+
+// Explicit Euler adds energy every step: (1 + ω²Δt²) per step in the oscillation's energy. On the
+// spring scene (ω = 10 rad/s, Δt = 1 ms) that passes 0.1 E_scale within the 5000 steps.
+TEST(RunChecks, EnergyGrowthFiresOnExplicitEuler) {
+    auto sim = makeSimulation(load("spring.json", {"solver.method=explicit_euler"}));
+    const RunResult r = runSimulation(*sim, 5000, 5000);
+    const RunWarning* w = find(r, WarningKind::EnergyGrowth);
+    ASSERT_NE(w, nullptr);
+    EXPECT_GT(w->value, kEnergyGrowthBound);
+    EXPECT_GT(w->step, 1) << "it grows gradually";
+    auto symplectic = makeSimulation(load("spring.json", {}));
+    EXPECT_TRUE(runSimulation(*symplectic, 5000, 5000).warnings.empty()) << "symplectic Euler keeps the energy";
+}
+
+// A particle that leaves the region |x| < report.blowup stops the run with that cause, and every
+// text says so: not "no longer finite" (its state is finite).
+TEST(RunChecks, LeftTheRegionSaysSo) {
+    auto sim = makeSimulation(load("spring.json", {"report.blowup=1.4"}));  // the particle starts 1.5 m from the origin
+    const RunResult r = runSimulation(*sim, 10, 1);
+    ASSERT_TRUE(r.unstable);
+    EXPECT_EQ(r.cause, StopCause::LeftRegion);
+    EXPECT_TRUE(sim->state().isFinite());
+    EXPECT_TRUE(contains(r.message, "unstable at step 1 ") && contains(r.message, "left the region |x| < 1.4 m")) << r.message;
+    std::ostringstream summary;
+    printSummary(summary, *sim, r);
+    EXPECT_TRUE(contains(summary.str(), "left the region")) << summary.str();
+    EXPECT_FALSE(contains(summary.str(), "no longer finite")) << summary.str();
+    EXPECT_STREQ(causeName(r.cause), "left_region");
+}
+
+// The path test of the fell-through check finds a path through a sphere whose two ends are both
+// outside it, and none for a path that only grazes the thickness band.
+TEST(RunChecks, PathDistanceFindsATunnel) {
+    Collider s;
+    s.type = Collider::Type::Sphere;
+    s.point = Vec3(0, 0, 0), s.radius = 0.4;
+    EXPECT_LT(pathDistance(s, Vec3(0, 1, 0), Vec3(0, -1, 0), 0.3), -0.3) << "straight through the centre: depth R = 0.4";
+    EXPECT_GT(pathDistance(s, Vec3(0, 1, 0), Vec3(0, -1, 0), 0.5), -0.4 - 1e-12) << "never deeper than the deepest point";
+    EXPECT_LT(pathDistance(s, Vec3(0.1, 1, 0), Vec3(0.1, -1, 0), 0.04), -0.04) << "through, off centre";
+    EXPECT_GT(pathDistance(s, Vec3(0.395, 1, 0), Vec3(0.395, -1, 0), 0.04), -0.04) << "grazing the rim: less than D deep";
+    Collider p;  // the ground plane y = 0
+    EXPECT_NEAR(pathDistance(p, Vec3(0, 0.01, 0), Vec3(3, 0.02, 0), 0.04), 0.01, 1e-12) << "sliding along the plane";
+}
