@@ -60,6 +60,29 @@ if [[ $code -eq 3 ]] && grep -q "unstable at step" "$tmp/err"; then ok; else bad
 code=$?
 if [[ $code -eq 3 ]] && grep -q "unstable at step" "$tmp/err"; then ok; else bad "cloth blow-up: exit $code, $(cat "$tmp/err")"; fi
 
+# When a result is not a result (run.h: RunChecks). No false alarm: every shipped scene at its own
+# settings passes --strict. pbd_sphere at three times its step falls through the sphere: the summary
+# says so with the step and the worst penetration of the run, summary.json carries the warning, exit
+# 0; with --strict it is an error, exit 3. A particle leaving |x| < report.blowup is named as such.
+for s in "$root"/scenes/*.json; do
+  if "$exe" run "$s" --strict --quiet >"$tmp/out" 2>"$tmp/err"; then ok; else bad "--strict on $s at its own settings: $(cat "$tmp/err")"; fi
+done
+"$exe" run "$root/scenes/pbd_sphere.json" --set solver.dt=0.03 --quiet --out "$tmp/fall" >"$tmp/out" 2>"$tmp/err"
+code=$?
+if [[ $code -eq 0 ]] && grep -q "warning: fell through: .* at step [0-9]" "$tmp/out" && grep -q "worst_penetration .* at step" "$tmp/out" \
+   && grep -q '"kind": "fell_through"' "$tmp/fall/summary.json"; then ok; else bad "fell through without --strict: exit $code, $(grep -i warn "$tmp/out")"; fi
+"$exe" run "$root/scenes/pbd_sphere.json" --set solver.dt=0.03 --quiet --strict >"$tmp/out" 2>"$tmp/err"
+code=$?
+if [[ $code -eq 3 && $(grep -c '^error: ' "$tmp/err") -eq 1 ]] && grep -q "^error: .*pbd_sphere.json: solver: --strict: fell through: .* at step [0-9]" "$tmp/err"; then ok
+else bad "fell through --strict: exit $code, $(cat "$tmp/err")"; fi
+"$exe" run "$root/scenes/pbd_hanging.json" --set cloth.nx=64 --set cloth.ny=64 --set solver.iterations=2 --steps 30 --quiet --strict >"$tmp/out" 2>"$tmp/err"
+code=$?
+if [[ $code -eq 3 ]] && grep -q "not converged: .* since step [0-9]" "$tmp/err"; then ok; else bad "not converged --strict: exit $code, $(cat "$tmp/err")"; fi
+"$exe" run "$root/scenes/spring.json" --set report.blowup=1.4 --quiet --out "$tmp/region" >"$tmp/out" 2>"$tmp/err"
+code=$?
+if [[ $code -eq 3 ]] && grep -q "left the region |x| < 1.4 m" "$tmp/err" && grep -q "left the region" "$tmp/out" && ! grep -q "no longer finite" "$tmp/out" \
+   && grep -q '"cause": "left_region"' "$tmp/region/summary.json"; then ok; else bad "left the region: exit $code, $(cat "$tmp/err")"; fi
+
 # The studies write CSV (and PNG when gnuplot is there) and print their table.
 if "$exe" study stability "$root/scenes/spring.json" --methods symplectic_euler,implicit_euler --k-count 3 --dt-count 3 --steps 100 \
      --out "$tmp/st" >"$tmp/out" 2>&1 && grep -q "agrees in" "$tmp/out" && [[ -s $tmp/st/stability.csv ]]; then ok; else bad "study stability: $(tail -3 "$tmp/out")"; fi
