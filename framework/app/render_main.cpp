@@ -94,12 +94,13 @@ int runRender(const RenderArgs& a) {
     RunResult result;
     const long long every = std::max<long long>(1, stepsUntil(frames - 1) / 10);
     bool header = false;
+    RunChecks checks(*sim);  // the same checks and messages as `clothlab run`
     const auto t0 = Clock::now();
     for (long long f = 0; f < frames; ++f) {
         if (f > 0) {
             const long long n = stepsUntil(f) - result.steps;
             for (long long k = 0; k < n; ++k) {
-                result.message = stepAndCheck(*sim, ++result.steps);
+                result.message = checks.step(*sim, ++result.steps);
                 if (!result.message.empty()) {
                     result.unstable = true;
                     break;
@@ -118,6 +119,8 @@ int runRender(const RenderArgs& a) {
         shots.push_back(makeDrawData(*sim));
     }
     result.wall = seconds(t0, Clock::now());
+    if (!result.unstable) checks.finish(*sim);
+    checks.collect(result);
     if (result.unstable) std::cout << result.message << "\n";
     printSummary(std::cout, *sim, result);
 
@@ -214,6 +217,7 @@ int runGui(const GuiArgs& a) {
         std::cout << "wrote " << a.screenshot << " (" << W << "x" << H << ", " << a.frames << " frames)\n";
     }
     if (!app.message().empty()) std::cout << "panel message: " << app.message() << "\n";
+    for (const std::string& w : app.warnings()) std::cout << "panel " << w << "\n";
     return 0;
 }
 

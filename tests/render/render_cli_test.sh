@@ -46,5 +46,13 @@ if "$exe" gui "$root/scenes/spring.json" --screenshot "$tmp/app.png" --frames 10
 else
   bad "gui --screenshot failed: $(tail -3 "$tmp/out")"
 fi
-[[ $fail -eq 0 ]] && echo "ok: clothlab-render frames, errors, video, app screenshot"
+# When the result is not a result, the renderer and the app say what `clothlab run` says (run.h):
+# pbd_sphere at three times its step falls through the sphere; at its own step nothing is flagged.
+"$exe" render "$root/scenes/pbd_sphere.json" --set solver.dt=0.03 --seconds 1 --fps 5 --size 160x120 --out "$tmp/fall" --quiet >"$tmp/out" 2>&1
+grep -q "warning: fell through: .* at step [0-9]" "$tmp/out" || bad "render: no fell-through warning: $(grep -i warn "$tmp/out")"
+"$exe" gui "$root/scenes/pbd_sphere.json" --set solver.dt=0.03 --frames 40 --size 640x400 --screenshot "$tmp/fall.png" >"$tmp/out" 2>&1
+grep -q "panel warning: fell through" "$tmp/out" || bad "app: no fell-through warning in the panel: $(tail -3 "$tmp/out")"
+"$exe" gui "$root/scenes/pbd_sphere.json" --frames 40 --size 640x400 --screenshot "$tmp/stays.png" >"$tmp/out" 2>&1
+! grep -q "panel warning" "$tmp/out" || bad "app: a warning on pbd_sphere at its own step: $(grep warning "$tmp/out")"
+[[ $fail -eq 0 ]] && echo "ok: clothlab-render frames, errors, video, app screenshot, warnings"
 exit $fail

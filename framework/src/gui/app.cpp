@@ -143,6 +143,7 @@ void App::rebuild(bool keep_state) {
     for (size_t i = 0; i < all_colliders_.size(); ++i)
         if (collider_on_[i]) scene_.colliders.push_back(all_colliders_[i]);
     sim_.reset();
+    checks_.reset();  // made at the next step (safeStep), where a stub's NotImplemented is caught
     message_.clear();
     grabbed_ = -1;
     try {
@@ -170,6 +171,14 @@ void App::rebuild(bool keep_state) {
     if (!keep_state) energy_.clear(), error_.clear(), step_ms_.clear(), steps_ = 0;
 }
 
+std::vector<std::string> App::warnings() const {
+    std::vector<std::string> out;
+    RunResult r;
+    if (sim_ && checks_) checks_->collect(r);
+    for (const RunWarning& w : r.warnings) out.push_back("warning: " + warningText(w, scene_));
+    return out;
+}
+
 DrawData App::currentDrawData() const {
     if (options_.wave_grid > 1) return waveCloth(options_.wave_grid, wave_t_);
     return sim_ ? makeDrawData(*sim_) : makeDrawData(scene_);
@@ -180,7 +189,9 @@ void App::safeStep() {
     const auto t0 = std::chrono::steady_clock::now();
     std::string unstable;
     try {
-        unstable = stepAndCheck(*sim_, ++steps_);
+        // The user moving a particle puts energy in and particles anywhere: the checks start again.
+        if (!checks_ || grabbed_ >= 0) checks_ = std::make_unique<RunChecks>(*sim_);
+        unstable = checks_->step(*sim_, ++steps_);
     } catch (const NotImplemented& e) {
         message_ = e.what();
         stub_hit_ = e.what();
@@ -353,6 +364,16 @@ void App::panel(int /*width*/, int height) {
         ImGui::PushStyleColor(ImGuiCol_Text, kRed);
         ImGui::TextWrapped("%s", message_.c_str());
         ImGui::PopStyleColor();
+    }
+    if (sim_ && checks_) {  // when the result is not a result (run.h): one line each, the whole sentence on hover
+        RunResult r;
+        checks_->collect(r);
+        for (const RunWarning& w : r.warnings) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.42f, 0.0f, 1.0f));
+            ImGui::TextWrapped("warning: %s", warningHeadline(w, scene_).c_str());
+            ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", warningText(w, scene_).c_str());
+        }
     }
     if (options_.wave_grid > 1)
         ImGui::TextWrapped("Benchmark: the view shows a %dx%d cloth moved by a travelling wave (no simulation).",

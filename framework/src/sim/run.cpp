@@ -96,6 +96,16 @@ std::string warningText(const RunWarning& w, const Scene& s) {
     return m.str();
 }
 
+std::string warningHeadline(const RunWarning& w, const Scene& s) {
+    switch (w.kind) {
+        case WarningKind::FellThrough: return "fell through " + colliderName(s, w.collider) + " at " + since(w);
+        case WarningKind::NotConverged: return "not converged: RMS strain " + percent(w.value) + " since " + since(w);
+        case WarningKind::Penetration: return "penetration " + num(w.value) + " m into " + colliderName(s, w.collider) + " at " + since(w);
+        case WarningKind::EnergyGrowth: return "energy grew by " + num(w.value) + " E_scale, from " + since(w);
+    }
+    return "";
+}
+
 StopCause instabilityCause(const State& s, double bound) {
     if (!s.x.allFinite()) return StopCause::PositionNotFinite;
     if (!s.v.allFinite()) return StopCause::VelocityNotFinite;
@@ -249,6 +259,14 @@ void RunChecks::finish(const Simulation& sim) {
     w.value = e.rms, w.extra = e.max;
 }
 
+void RunChecks::collect(RunResult& r) const {
+    r.cause = cause_;
+    r.warnings = warnings_;
+    std::stable_sort(r.warnings.begin(), r.warnings.end(), [](const RunWarning& a, const RunWarning& b) { return a.kind < b.kind; });
+    r.worst_penetration = worstPenetration_;
+    r.worst_penetration_step = worstPenetrationStep_;
+}
+
 RunResult runSimulation(Simulation& sim, long long steps, long long every,
                         const std::function<void(const ReportRow&)>& on_row) {
     RunResult result;
@@ -260,12 +278,7 @@ RunResult runSimulation(Simulation& sim, long long steps, long long every,
         result.rows.push_back(std::move(row));
     };
     auto done = [&] {
-        result.cause = checks.cause();
-        result.warnings = checks.warnings();
-        std::stable_sort(result.warnings.begin(), result.warnings.end(),
-                         [](const RunWarning& a, const RunWarning& b) { return a.kind < b.kind; });
-        result.worst_penetration = checks.worstPenetration();
-        result.worst_penetration_step = checks.worstPenetrationStep();
+        checks.collect(result);
         return result;
     };
     record();

@@ -15,6 +15,7 @@
 #include "clothlab/render/camera.h"
 #include "clothlab/render/draw_data.h"
 #include "clothlab/render/renderer.h"
+#include "clothlab/sim/run.h"
 #include "clothlab/sim/simulation.h"
 
 namespace clothlab {
@@ -71,6 +72,9 @@ public:
 
     /// The message shown in red at the top of the panel ("" = none), e.g. "not implemented: exercise 3.1 ...".
     const std::string& message() const { return message_; }
+    /// The run checks' warnings since the last reset or drag (warningText(): not converged, penetration,
+    /// fell through, energy growth), shown under the message in the panel.
+    std::vector<std::string> warnings() const;
     /// The running simulation (null when the scene's method is not available in this build).
     const Simulation* simulation() const { return sim_.get(); }
     /// The camera of the 3-D view (fitted to the scene on the first frame).
@@ -117,6 +121,7 @@ private:
     std::string error_name_;             ///< which metric the error plot shows
     double last_step_ms_ = 0.0;          ///< wall time of the last step, ms
     long long steps_ = 0;                ///< steps since the last reset
+    std::unique_ptr<RunChecks> checks_;  ///< the run checks since the last reset or drag (run.h)
     std::vector<StageInfo> stages_;      ///< stages of this build
     double wave_t_ = 0.0;                ///< time of the benchmark wave, s
     bool save_view_ = false;             ///< "Save PNG" pressed: write the 3-D view on the next frame

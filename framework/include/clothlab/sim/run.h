@@ -80,6 +80,12 @@ const char* warningName(WarningKind k);
 /// @param scene  the scene it came from (collider types, thickness, the settings to change)
 std::string warningText(const RunWarning& w, const Scene& scene);
 
+/// The warning in one short line, e.g. "fell through collider 0 (sphere) at step 18 (t = 0.54 s)"
+/// (the app's status line; warningText() is the whole sentence).
+/// @param w      the warning
+/// @param scene  the scene it came from
+std::string warningHeadline(const RunWarning& w, const Scene& scene);
+
 /// Why a state can no longer be trusted: NaN/Inf position, NaN/Inf velocity, or a particle outside
 /// the ball |x| < bound; StopCause::None when it can.
 /// @param s      the state
@@ -129,6 +135,19 @@ double energyScale(const Simulation& sim);
 /// @param depth  the depth of interest D > 0, m
 double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth);
 
+/// What runSimulation() did.
+struct RunResult {
+    long long steps = 0;          ///< steps done
+    double wall = 0.0;            ///< wall time of the steps, s
+    bool unstable = false;        ///< stopped because the state blew up or the solver failed
+    StopCause cause = StopCause::None;  ///< why it stopped
+    std::string message;          ///< "unstable at step N (t = ...): reason" when unstable
+    std::vector<RunWarning> warnings;  ///< RunChecks::warnings() at the end, most severe kind first
+    double worst_penetration = 0.0;    ///< RunChecks::worstPenetration(), m (0 without colliders)
+    long long worst_penetration_step = 0;  ///< the step it was reached at
+    std::vector<ReportRow> rows;  ///< one row every `every` steps and one at the end
+};
+
 /// The checks of a run beside the step: the stop causes of stepAndCheck() and, without stopping,
 /// the warnings (WarningKind) with the step where each started, and the worst penetration of the
 /// whole run. One object per run; step() in place of sim.step().
@@ -150,6 +169,9 @@ public:
     /// Ends the run: a NotConverged stretch still above the bound at the end fires now.
     /// @param sim  the simulation
     void finish(const Simulation& sim);
+    /// Copies cause(), warnings() (most severe kind first) and the worst penetration into `r`.
+    /// @param r  the result of the run
+    void collect(RunResult& r) const;
 
     /// Why the run stopped (None: it did not).
     StopCause cause() const { return cause_; }
@@ -176,19 +198,6 @@ private:
     double strainSinceT_ = 0.0;            ///< its time, s
     double worstPenetration_ = 0.0;
     long long worstPenetrationStep_ = 0;
-};
-
-/// What runSimulation() did.
-struct RunResult {
-    long long steps = 0;          ///< steps done
-    double wall = 0.0;            ///< wall time of the steps, s
-    bool unstable = false;        ///< stopped because the state blew up or the solver failed
-    StopCause cause = StopCause::None;  ///< why it stopped
-    std::string message;          ///< "unstable at step N (t = ...): reason" when unstable
-    std::vector<RunWarning> warnings;  ///< RunChecks::warnings() at the end, most severe kind first
-    double worst_penetration = 0.0;    ///< RunChecks::worstPenetration(), m (0 without colliders)
-    long long worst_penetration_step = 0;  ///< the step it was reached at
-    std::vector<ReportRow> rows;  ///< one row every `every` steps and one at the end
 };
 
 /// Steps `steps` times (or until the state turns NaN/Inf, leaves the ball of radius
