@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/io/scene_json.h"
+#include "clothlab/study/extremes.h"
 #include "clothlab/study/precision.h"
 #include "clothlab/study/sag.h"
 #include "clothlab/study/stability.h"
@@ -106,7 +108,6 @@ void checkRange(const char* name, double lo, double hi, int count) {
 }  // namespace
 
 void addStudyCommand(CLI::App& app, int& exit_code) {
-    (void)exit_code;
     CLI::App* study = app.add_subcommand("study", "Stability maps, error-vs-run-time studies (force-based: dt sweeps; pbd/xpbd: iterations and substeps), PBD-vs-XPBD sag");
     study->require_subcommand(1);
 
@@ -230,6 +231,74 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         writePrecisionCsv(out + "/precision.csv", r);
         std::cout << "wrote " << out << "/precision.csv\n";
         for (const std::string& png : plotPrecision(std::filesystem::absolute(out).string(), r)) std::cout << "wrote " << png << "\n";
+    });
+
+    // ---- study extremes (extremes.h) -----------------------------------------------------------
+    struct ExtremesCli {
+        std::string out = "out/study/extremes", scenes = "scenes", methods, ks, dts, iterations, compliances;
+        long long steps = 100;
+    };
+    auto ex = std::make_shared<ExtremesCli>();
+    CLI::App* xs = study->add_subcommand("extremes", "The extreme matrix for every method: stable / reported (with the step) / silently wrong; "
+                                                     "markdown table, CSV, PNG; exit 3 if any cell is silently wrong");
+    xs->add_option("--scenes", ex->scenes, "Folder with the shipped scenes the cases start from");
+    xs->add_option("--methods", ex->methods, "Comma-separated methods (default: all)");
+    xs->add_option("--k", ex->ks, "Comma-separated stiffnesses of the force-based cases, N/m (default 1, 10, ..., 1e9)");
+    xs->add_option("--dt", ex->dts, "Comma-separated time steps, s (default 1e-5, 1e-4, ..., 1)");
+    xs->add_option("--iterations", ex->iterations, "Comma-separated PBD iterations (default 1, 3, 10, 30, 100, 300, 1000)");
+    xs->add_option("--compliance", ex->compliances, "Comma-separated XPBD compliances, m/N (default 0, 1e-9, 1e-6, 1e-3, 1)");
+    xs->add_option("--steps", ex->steps, "Steps per run")->check(CLI::PositiveNumber);
+    xs->add_option("--out", ex->out, "Output folder (default: out/study/extremes)");
+    xs->callback([ex, &exit_code] {
+        ExtremesOptions o;
+        auto numbers = [](const std::string& list, const char* name, bool positive) {
+            std::vector<double> v;
+            for (const std::string& w : splitWords(list)) {
+                char* end = nullptr;
+                const double x = std::strtod(w.c_str(), &end);
+                if (end == w.c_str() || *end != '\0' || !std::isfinite(x) || x < 0 || (positive && x == 0))
+                    throw InputError("command line", name, "\"" + w + "\" is not a " + (positive ? "positive" : "non-negative") + " number");
+                v.push_back(x);
+            }
+            if (v.empty()) throw InputError("command line", name, "no value given");
+            return v;
+        };
+        if (!ex->methods.empty()) o.methods = splitMethods(ex->methods);
+        if (!ex->ks.empty()) o.ks = numbers(ex->ks, "--k", true);
+        if (!ex->dts.empty()) o.dts = numbers(ex->dts, "--dt", true);
+        if (!ex->iterations.empty()) {
+            o.iterations.clear();
+            for (int i : splitInts(ex->iterations, "--iterations")) o.iterations.push_back(i);
+        }
+        if (!ex->compliances.empty()) o.compliances = numbers(ex->compliances, "--compliance", false);
+        o.steps = ex->steps;
+        o.progress = progressPrinter("extremes");
+        const std::vector<ExtremeCase> cases = extremeCases(ex->scenes);
+        loadScene(ex->scenes + "/spring.json");  // a wrong --scenes: one clear error before any run
+        std::filesystem::create_directories(ex->out);
+        std::cout << "extremes study: " << cases.size() << " cases x the methods that apply, " << o.steps << " steps per run\n";
+        const std::vector<ExtremeCell> cells = extremesStudy(cases, o);
+        std::string command = "./lab study extremes";
+        if (o.steps != 100) command += " --steps " + std::to_string(o.steps);
+        for (const auto& [flag, value] : {std::pair<const char*, std::string>{"--methods", ex->methods}, {"--k", ex->ks}, {"--dt", ex->dts},
+                                          {"--iterations", ex->iterations}, {"--compliance", ex->compliances}})
+            if (!value.empty()) command += std::string(" ") + flag + " " + value;
+        writeExtremesMarkdown(std::cout, cells, command);
+        {
+            std::ofstream md(ex->out + "/extremes.md");
+            if (!md) throw InputError(ex->out + "/extremes.md", "(file)", "cannot write the file");
+            writeExtremesMarkdown(md, cells, command);
+        }
+        writeExtremesCsv(ex->out + "/extremes.csv", cells);
+        std::cout << "wrote " << ex->out << "/extremes.md\nwrote " << ex->out << "/extremes.csv\n";
+        const std::string png = plotExtremes(std::filesystem::absolute(ex->out).string(), cells);
+        if (!png.empty()) std::cout << "wrote " << png << "\n";
+        for (const ExtremeCell& c : cells)
+            if (c.outcome == ExtremeOutcome::SilentlyWrong) {
+                std::cerr << "error: extremes: silently wrong: " << c.case_name << ", " << methodName(c.method) << ": " << c.message << "\n";
+                exit_code = Unstable;
+                break;
+            }
     });
 
     // ---- study sag (sag.h) ---------------------------------------------------------------------

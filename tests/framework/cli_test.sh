@@ -88,6 +88,10 @@ if "$exe" study stability "$root/scenes/spring.json" --methods symplectic_euler,
      --out "$tmp/st" >"$tmp/out" 2>&1 && grep -q "agrees in" "$tmp/out" && [[ -s $tmp/st/stability.csv ]]; then ok; else bad "study stability: $(tail -3 "$tmp/out")"; fi
 if "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/pr" >"$tmp/out" 2>&1 \
      && grep -q "measured order" "$tmp/out" && [[ $(wc -l <"$tmp/pr/precision.csv") -eq 3 ]]; then ok; else bad "study precision: $(tail -3 "$tmp/out")"; fi
+# The extremes report (a small matrix): a markdown table with the command, a CSV, no silently wrong cell.
+if "$exe" study extremes --methods symplectic_euler,pbd --k 1,1e9 --dt 1e-3,1 --iterations 1,10 --steps 10 --out "$tmp/ex" >"$tmp/out" 2>&1 \
+   && grep -q '`./lab study extremes --steps 10 --methods symplectic_euler,pbd' "$tmp/ex/extremes.md" && grep -q '\*\*0 silently wrong\*\*' "$tmp/ex/extremes.md" \
+   && [[ $(grep -c ',symplectic_euler,' "$tmp/ex/extremes.csv") -eq 32 ]]; then ok; else bad "study extremes: $(tail -3 "$tmp/out")"; fi
 # Without gnuplot on the PATH: a clear note, the CSV all the same, exit 0.
 if env PATH=/nonexistent "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/np" >"$tmp/out" 2>"$tmp/err" \
      && grep -q "gnuplot not found" "$tmp/err" && [[ -s $tmp/np/precision.csv && ! -e $tmp/np/precision.png ]]; then ok; else bad "study without gnuplot: $(cat "$tmp/err")"; fi
