@@ -89,7 +89,7 @@ if "$exe" study stability "$root/scenes/spring.json" --methods symplectic_euler,
 if "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/pr" >"$tmp/out" 2>&1 \
      && grep -q "measured order" "$tmp/out" && [[ $(wc -l <"$tmp/pr/precision.csv") -eq 3 ]]; then ok; else bad "study precision: $(tail -3 "$tmp/out")"; fi
 # The extremes report (a small matrix): a markdown table with the command, a CSV, no silently wrong cell.
-if "$exe" study extremes --methods symplectic_euler,pbd --k 1,1e9 --dt 1e-3,1 --iterations 1,10 --steps 10 --out "$tmp/ex" >"$tmp/out" 2>&1 \
+if "$exe" study extremes --scenes "$root/scenes" --methods symplectic_euler,pbd --k 1,1e9 --dt 1e-3,1 --iterations 1,10 --steps 10 --out "$tmp/ex" >"$tmp/out" 2>&1 \
    && grep -q '`./lab study extremes --steps 10 --methods symplectic_euler,pbd' "$tmp/ex/extremes.md" && grep -q '\*\*0 silently wrong\*\*' "$tmp/ex/extremes.md" \
    && [[ $(grep -c ',symplectic_euler,' "$tmp/ex/extremes.csv") -eq 32 ]]; then ok; else bad "study extremes: $(tail -3 "$tmp/out")"; fi
 # Without gnuplot on the PATH: a clear note, the CSV all the same, exit 0.
