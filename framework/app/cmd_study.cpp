@@ -118,6 +118,9 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
         double k_min = NAN, k_max = NAN, dt_min = NAN, dt_max = NAN, factor = 100;
         int k_count = 13, dt_count = 13;
         long long steps = 1000;
+        bool collision = false;
+        std::string iterations = "1,2,5,10,20,50";
+        double seconds = -1;
     };
     auto so = std::make_shared<StabilityCli>();
     CLI::App* st = study->add_subcommand("stability", "Sweep stiffness k and time step dt per integrator; CSV, PNG maps, table");
@@ -129,12 +132,36 @@ void addStudyCommand(CLI::App& app, int& exit_code) {
     st->add_option("--k-count", so->k_count, "Number of stiffness values (log-spaced)");
     st->add_option("--dt-min", so->dt_min, "Smallest time step, s (default: scene dt / 100)");
     st->add_option("--dt-max", so->dt_max, "Largest time step, s (default: scene dt * 100)");
-    st->add_option("--dt-count", so->dt_count, "Number of time steps (log-spaced)");
+    auto* dtCount = st->add_option("--dt-count", so->dt_count, "Number of time steps (log-spaced)");
     st->add_option("--steps", so->steps, "Steps per run")->check(CLI::PositiveNumber);
     st->add_option("--energy-factor", so->factor, "Unstable if the energy rises by more than this many E_scale")->check(CLI::PositiveNumber);
     st->add_option("--out", so->out, "Output folder (default: out/study/<scene>-stability)");
-    st->callback([so] {
+    st->add_flag("--collision", so->collision,
+                 "The collision axis instead (pbd/xpbd scene with colliders): dt x iterations, does the cloth stay on its colliders; "
+                 "dt from scene dt / 4 to scene dt * 8 (6 values) unless given; collision.csv, collision.png");
+    st->add_option("--iterations", so->iterations, "--collision: comma-separated solver iterations");
+    st->add_option("--seconds", so->seconds, "--collision: simulated time per run, s (default: the scene's steps x dt)")->check(CLI::PositiveNumber);
+    st->callback([so, dtCount] {
         const Scene scene = loadScene(so->scene, so->sets);
+        if (so->collision) {
+            const double dt_min = !std::isnan(so->dt_min) ? so->dt_min : scene.solver.dt / 4;
+            const double dt_max = !std::isnan(so->dt_max) ? so->dt_max : scene.solver.dt * 8;
+            const int count = dtCount->count() > 0 ? so->dt_count : 6;
+            checkRange("--dt-min/--dt-max/--dt-count", dt_min, dt_max, count);
+            const double seconds = so->seconds > 0 ? so->seconds : scene.solver.steps * scene.solver.dt;
+            const std::string out = so->out.empty() ? defaultOut(so->scene, "collision") : so->out;
+            std::filesystem::create_directories(out);
+            const std::vector<int> its = splitInts(so->iterations, "--iterations");
+            std::cout << "collision map of " << scene.file << ": " << count << " dt in [" << dt_min << ", " << dt_max << "] s x " << its.size()
+                      << " iterations, " << seconds << " s simulated per run\n";
+            const CollisionResult r = collisionSweep(scene, logSpace(dt_min, dt_max, count), its, seconds, progressPrinter("collision"));
+            printCollisionTable(std::cout, r);
+            writeCollisionCsv(out + "/collision.csv", r);
+            std::cout << "wrote " << out << "/collision.csv\n";
+            const std::string png = plotCollision(std::filesystem::absolute(out).string(), r);
+            if (!png.empty()) std::cout << "wrote " << png << "\n";
+            return;
+        }
         StabilityOptions o;
         if (!so->methods.empty()) o.methods = splitMethods(so->methods);
         const double k = sceneStiffness(scene);

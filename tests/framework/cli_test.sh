@@ -88,6 +88,10 @@ if "$exe" study stability "$root/scenes/spring.json" --methods symplectic_euler,
      --out "$tmp/st" >"$tmp/out" 2>&1 && grep -q "agrees in" "$tmp/out" && [[ -s $tmp/st/stability.csv ]]; then ok; else bad "study stability: $(tail -3 "$tmp/out")"; fi
 if "$exe" study precision "$root/scenes/spring.json" --methods rk4 --dt-count 2 --out "$tmp/pr" >"$tmp/out" 2>&1 \
      && grep -q "measured order" "$tmp/out" && [[ $(wc -l <"$tmp/pr/precision.csv") -eq 3 ]]; then ok; else bad "study precision: $(tail -3 "$tmp/out")"; fi
+# The collision axis of the stability study: the map as text, CSV (and PNG), fell through at 0.03 s.
+if "$exe" study stability "$root/scenes/pbd_sphere.json" --collision --dt-min 0.01 --dt-max 0.03 --dt-count 2 --iterations 10 --seconds 1 \
+     --out "$tmp/col" >"$tmp/out" 2>&1 && grep -q "^ *0.03  *F$" "$tmp/out" && grep -q "^ *0.01  *\.$" "$tmp/out" \
+   && [[ $(wc -l <"$tmp/col/collision.csv") -eq 3 ]]; then ok; else bad "study stability --collision: $(tail -4 "$tmp/out")"; fi
 # The extremes report (a small matrix): a markdown table with the command, a CSV, no silently wrong cell.
 if "$exe" study extremes --scenes "$root/scenes" --methods symplectic_euler,pbd --k 1,1e9 --dt 1e-3,1 --iterations 1,10 --steps 10 --out "$tmp/ex" >"$tmp/out" 2>&1 \
    && grep -q '`./lab study extremes --steps 10 --methods symplectic_euler,pbd' "$tmp/ex/extremes.md" && grep -q '\*\*0 silently wrong\*\*' "$tmp/ex/extremes.md" \

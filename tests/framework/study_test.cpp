@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "clothlab/core/input_error.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/study/precision.h"
 #include "clothlab/study/stability.h"
@@ -83,6 +84,22 @@ TEST(Stability, SmallSweepAgreesWithTheory) {
         agree += theory == p.verdict.stable;
     }
     EXPECT_GE(agree, 48) << "measured stability must match omega dt < 2 (symplectic Euler) and 'always' (implicit Euler)";
+}
+
+// The collision axis: pbd_sphere stays on its sphere at its own step and iterations, and falls through
+// at three times the step (the run checks' FellThrough, with the step); a scene without colliders
+// or a force-based one is refused with one clear error.
+TEST(Stability, CollisionAxisStaysAtTheScenesStepFallsAtThreeTimesIt) {
+    const CollisionResult r = collisionSweep(scene("pbd_sphere.json"), {0.01, 0.03}, {10}, 1.0);
+    ASSERT_EQ(r.points.size(), 2u);
+    EXPECT_TRUE(r.points[0].stays) << "dt = 0.01 s, 10 iterations: " << r.points[0].message;
+    EXPECT_FALSE(r.points[1].stays) << "dt = 0.03 s, 10 iterations must fall through";
+    EXPECT_FALSE(r.points[1].unstable);
+    EXPECT_GT(r.points[1].step, 0);
+    EXPECT_NE(r.points[1].message.find("fell through collider 0 (sphere) at step " + std::to_string(r.points[1].step)), std::string::npos)
+        << r.points[1].message;
+    EXPECT_THROW(collisionSweep(scene("pbd_hanging.json"), {0.01}, {10}, 0.1), InputError);
+    EXPECT_THROW(collisionSweep(scene("pbd_sphere.json", {"solver.method=symplectic_euler"}), {0.01}, {10}, 0.1), InputError);
 }
 
 TEST(Precision, ConvergenceOrdersOnSingleSpring) {

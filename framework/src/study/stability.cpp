@@ -233,4 +233,84 @@ std::vector<std::string> plotStability(const std::string& dir, const StabilityRe
     return written;
 }
 
+CollisionResult collisionSweep(const Scene& scene, const std::vector<double>& dts, const std::vector<int>& iterations, double seconds,
+                               const std::function<void(int, int, const std::string&)>& progress) {
+    if (scene.colliders.empty()) throw InputError(scene.file, "colliders", "the collision map needs a scene with colliders");
+    if (!isPositionBased(scene.solver.method))
+        throw InputError(scene.file, "solver.method", "the collision map needs a pbd or xpbd scene (the force-based methods ignore colliders)");
+    CollisionResult r{scene.file, scene.solver.dt, scene.solver.iterations, seconds, {}};
+    const int total = static_cast<int>(dts.size() * iterations.size());
+    for (double dt : dts)
+        for (int it : iterations) {
+            Scene s = scene;
+            s.solver.dt = dt;
+            s.solver.iterations = it;
+            auto sim = makeSimulation(s);
+            RunChecks checks(*sim);
+            CollisionPoint p{dt, it, true, false, 0, ""};
+            const long long steps = std::max<long long>(1, std::llround(seconds / dt));
+            for (long long n = 1; n <= steps && p.stays; ++n) {
+                if (std::string stop = checks.step(*sim, n); !stop.empty()) {
+                    p = {dt, it, false, true, n, stop};
+                    break;
+                }
+                for (const RunWarning& w : checks.warnings())
+                    if (w.kind == WarningKind::FellThrough) p = {dt, it, false, false, w.step, warningHeadline(w, s)};
+            }
+            r.points.push_back(p);
+            if (progress) progress(static_cast<int>(r.points.size()), total, "");
+        }
+    return r;
+}
+
+void writeCollisionCsv(const std::string& path, const CollisionResult& r) {
+    std::ofstream out(path);
+    if (!out) throw InputError(path, "(file)", "cannot write the file");
+    out << std::setprecision(10) << "dt [s],iterations,stays,unstable,step,message\n";
+    for (const CollisionPoint& p : r.points)
+        out << p.dt << "," << p.iterations << "," << (p.stays ? 1 : 0) << "," << (p.unstable ? 1 : 0) << "," << p.step << ",\"" << p.message << "\"\n";
+}
+
+void printCollisionTable(std::ostream& out, const CollisionResult& r) {
+    std::vector<int> its;
+    for (const auto& p : r.points)
+        if (std::find(its.begin(), its.end(), p.iterations) == its.end()) its.push_back(p.iterations);
+    out << "collision map of " << r.scene << " over " << fmt(r.seconds) << " s: '.' stays on its colliders, 'F' fell through, '#' unstable; "
+        << "the scene's own: dt = " << fmt(r.dt_ref) << " s, " << r.iterations_ref << " iterations\n"
+        << "    dt [s]  iterations:";
+    for (int i : its) out << " " << i;
+    out << "\n";
+    double dt = -1;
+    size_t col = 0;
+    for (const auto& p : r.points) {
+        if (p.dt != dt) {
+            char buf[40];
+            std::snprintf(buf, sizeof buf, "%s%10.4g             ", dt < 0 ? "" : "\n", p.dt);
+            out << buf;
+            dt = p.dt, col = 0;
+        }
+        out << std::string(std::to_string(its[col++ % its.size()]).size(), ' ') << (p.unstable ? '#' : p.stays ? '.' : 'F');
+    }
+    out << "\n";
+}
+
+std::string plotCollision(const std::string& dir, const CollisionResult& r) {
+    {
+        std::ofstream d(dir + "/collision.dat");
+        d << std::setprecision(10) << "# dt iterations outcome(0 stays, 1 fell through, 2 unstable)\n";
+        for (const auto& p : r.points) d << p.dt << " " << p.iterations << " " << (p.unstable ? 2 : p.stays ? 0 : 1) << "\n";
+    }
+    std::ostringstream s;
+    s << "cd '" << dir << "'\nset terminal pngcairo size 640,480 font ',10'\nset output 'collision.png'\n"
+      << "set title 'does the cloth stay on its colliders? (" << r.scene << ", " << fmt(r.seconds) << " s)' noenhanced\n"
+      << "set logscale xy\nset xlabel 'time step {/Symbol D}t [s]'\nset ylabel 'solver iterations'\nset key below maxrows 2\n"
+      << "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
+      << "plot 'collision.dat' using 1:($3 == 0 ? $2 : 1/0) with points pt 7 ps 1.4 lc rgb '#2a9d3a' title 'stays', \\\n"
+      << "     '' using 1:($3 == 1 ? $2 : 1/0) with points pt 5 ps 1.3 lc rgb '#d62728' title 'fell through', \\\n"
+      << "     '' using 1:($3 == 2 ? $2 : 1/0) with points pt 9 ps 1.4 lc rgb '#1f5fbf' title 'unstable', \\\n"
+      << "     '-' using 1:2 with points pt 6 ps 2.6 lw 2 lc rgb 'black' title \"the scene's own\"\n"
+      << r.dt_ref << " " << r.iterations_ref << "\ne\n";
+    return runGnuplot(dir + "/collision.gp", s.str()) ? dir + "/collision.png" : "";
+}
+
 }  // namespace clothlab

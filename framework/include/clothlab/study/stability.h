@@ -103,4 +103,49 @@ void printStabilityTable(std::ostream& out, const StabilityResult& result);
 /// @return        the PNG files written (empty if gnuplot is missing or failed; a note goes to stderr)
 std::vector<std::string> plotStability(const std::string& dir, const StabilityResult& result);
 
+/// One run of the collision map.
+struct CollisionPoint {
+    double dt = 0.0;          ///< time step, s
+    int iterations = 0;       ///< solver iterations
+    bool stays = true;        ///< no particle fell through a collider and the run did not stop
+    bool unstable = false;    ///< the run stopped (run.h: StopCause)
+    long long step = 0;       ///< the step it fell through or stopped (0: stays)
+    std::string message;      ///< the warning or stop message ("" when it stays)
+};
+
+/// The collision axis of the stability study: Δt × iterations, stays on the collider or not.
+struct CollisionResult {
+    std::string scene;                   ///< scene file
+    double dt_ref = 0.0;                 ///< the scene's own Δt, s
+    int iterations_ref = 0;              ///< the scene's own iterations
+    double seconds = 0.0;                ///< simulated time of every run, s
+    std::vector<CollisionPoint> points;  ///< every (Δt, iterations) run
+};
+
+/// Runs a scene with colliders for `seconds` of simulated time at every Δt × iterations and records
+/// whether it stays on its colliders: the run checks of run.h (RunChecks) flag a particle that fell
+/// through (WarningKind::FellThrough; the run ends there) or a stop.
+/// @param scene       a position-based scene with colliders
+/// @param dts         time steps, s
+/// @param iterations  solver iterations
+/// @param seconds     simulated time per run, s
+/// @param progress    called after each run with (runs done, runs in total, ""); may be empty
+/// @throws InputError if the scene has no colliders or is not position-based
+CollisionResult collisionSweep(const Scene& scene, const std::vector<double>& dts, const std::vector<int>& iterations, double seconds,
+                               const std::function<void(int, int, const std::string&)>& progress = {});
+
+/// Writes the collision map as CSV: `dt [s],iterations,stays,unstable,step,message`.
+/// @throws InputError if the file cannot be written
+void writeCollisionCsv(const std::string& path, const CollisionResult& result);
+
+/// Prints the collision map as text: rows Δt, columns iterations; '.' stays, 'F' fell through, '#' unstable.
+void printCollisionTable(std::ostream& out, const CollisionResult& result);
+
+/// Draws collision.png with gnuplot: Δt against iterations, stays / fell through / unstable, the
+/// scene's own setting marked.
+/// @param dir     output folder
+/// @param result  the sweep
+/// @return        the PNG written, or "" (gnuplot missing or failed; a note goes to stderr)
+std::string plotCollision(const std::string& dir, const CollisionResult& result);
+
 }  // namespace clothlab
