@@ -239,6 +239,7 @@ void writeExtremesMarkdown(std::ostream& out, const std::vector<ExtremeCell>& ce
            "`X` silently wrong. Steps: the first step reported (stop or warning), smallest and largest over the row.\n\n"
         << "| case | method | axis | map | stable | warned | stopped | silently wrong | reported at steps |\n"
         << "|---|---|---|---|---|---|---|---|---|\n";
+    std::map<std::string, std::string> axes;  // axis -> its values, for the legend below the table
     for (const auto& [key, row] : rowsOf(cells)) {
         int n[4] = {0, 0, 0, 0};
         long long lo = -1, hi = -1;
@@ -250,18 +251,21 @@ void writeExtremesMarkdown(std::ostream& out, const std::vector<ExtremeCell>& ce
             ++n[static_cast<int>(c->outcome)];
             if (c->step > 0) lo = lo < 0 ? c->step : std::min(lo, c->step), hi = std::max(hi, c->step);
         }
-        std::string axis;
-        for (const ExtremeCell* c : row)
-            if (c->dt == row.front()->dt) axis += (axis.empty() ? "" : ", ") + num(c->p);
+        std::string& values = axes[extremeAxis(row.front()->method)];
+        if (values.empty())
+            for (const ExtremeCell* c : row)
+                if (c->dt == row.front()->dt) values += (values.empty() ? "" : ", ") + num(c->p);
         out << "| " << row.front()->case_name << " | " << methodName(row.front()->method) << " | " << extremeAxis(row.front()->method)
-            << ": " << axis << " | `" << map << "` | " << n[0] << " | " << n[2] << " | " << n[1] << " | " << n[3] << " | "
+            << " | `" << map << "` | " << n[0] << " | " << n[2] << " | " << n[1] << " | " << n[3] << " | "
             << (lo < 0 ? "-" : std::to_string(lo) + (hi != lo ? "–" + std::to_string(hi) : "")) << " |\n";
     }
     std::string dts;
     for (const ExtremeCell& c : cells)
         if (c.case_name == cells.front().case_name && c.method == cells.front().method && dts.find(" " + num(c.dt) + ",") == std::string::npos)
             dts += " " + num(c.dt) + ",";
-    if (!dts.empty()) out << "\nTime steps Δt [s]:" << dts.substr(0, dts.size() - 1) << ".\n";
+    if (!dts.empty()) out << "\nTime steps Δt [s]:" << dts.substr(0, dts.size() - 1) << ".";
+    for (const auto& [axis, values] : axes) out << " Axis " << axis << ": " << values << ".";
+    out << "\n";
     out << "\nSilently wrong cells:";
     if (counts[3] == 0) out << " none.\n";
     else {
