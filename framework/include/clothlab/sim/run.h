@@ -69,9 +69,9 @@ struct RunWarning {
     double extra = 0.0;      ///< NotConverged: the max strain (1) at the end; else 0
 };
 
-/// The name of a stop cause or warning kind as in summary.json, e.g. "left_region", "fell_through".
+/// The name of a stop cause as in summary.json, e.g. "left_region", "position_not_finite".
 const char* causeName(StopCause c);
-/// @copydoc causeName(StopCause)
+/// The name of a warning kind as in summary.json, e.g. "fell_through", "not_converged".
 const char* warningName(WarningKind k);
 
 /// The sentence for a warning: what happened, since which step, what would help. The one text the
