@@ -19,10 +19,13 @@ std::string num(double x, int precision = 3) {
 
 std::string percent(double fraction) { return num(100.0 * fraction) + " %"; }
 
+// "collider 0 (sphere)": the index into scene.colliders and the type's scene-file name.
 std::string colliderName(const Scene& scene, int i) {
-    std::string type = "collider";
-    if (i >= 0 && i < static_cast<int>(scene.colliders.size()))
-        type = scene.colliders[static_cast<size_t>(i)].type == Collider::Type::Plane ? "plane" : "sphere";
+    std::string type = "?";
+    if (i >= 0 && i < static_cast<int>(scene.colliders.size())) switch (scene.colliders[static_cast<size_t>(i)].type) {
+            case Collider::Type::Plane: type = "plane"; break;
+            case Collider::Type::Sphere: type = "sphere"; break;
+        }
     return "collider " + std::to_string(i) + " (" + type + ")";
 }
 
