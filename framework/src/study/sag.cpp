@@ -70,7 +70,8 @@ void printSagTable(std::ostream& out, const SagResult& r) {
         std::snprintf(buf, sizeof buf, "%10d", r.iterations[i]);
         out << buf;
         for (const SagSeries& s : r.series) {
-            std::snprintf(buf, sizeof buf, " | %*.3f", static_cast<int>(s.label.size()), 1e3 * s.sag[i]);
+            if (std::isfinite(s.sag[i])) std::snprintf(buf, sizeof buf, " | %*.3f", static_cast<int>(s.label.size()), 1e3 * s.sag[i]);
+            else std::snprintf(buf, sizeof buf, " | %*s", static_cast<int>(s.label.size()), "unstable");  // the run stopped (run.h)
             out << buf;
         }
         out << "\n";
