@@ -25,20 +25,21 @@ std::string num(double x) {
 
 using Make = std::function<std::unique_ptr<Simulation>(Method, double, double)>;
 
-// A force-based case: a shipped scene with the method, Δt and stiffness k set, then changed by `edit`.
-Make forceCase(const std::string& file, std::vector<std::string> sets, const std::vector<std::string>& kFields,
+// A force-based case: a shipped scene with the method, Δt and stiffness set, then changed by `edit`.
+// kFields: each stiffness field with its share of k (a cloth: structural k, shear k/2, bending k/10).
+Make forceCase(const std::string& file, std::vector<std::string> sets, const std::vector<std::pair<std::string, double>>& kFields,
                std::function<std::unique_ptr<Simulation>(Scene&)> edit = {}) {
     return [=](Method m, double k, double dt) {
         std::vector<std::string> s = sets;
         s.push_back(std::string("solver.method=") + methodName(m));
         s.push_back("solver.dt=" + num(dt));
-        for (const std::string& f : kFields) s.push_back(f + "=" + num(k * (f.find("shear") != std::string::npos ? 0.5 : f.find("bending") != std::string::npos ? 0.1 : 1.0)));
+        for (const auto& [field, share] : kFields) s.push_back(field + "=" + num(share * k));
         Scene scene = loadScene(file, s);
         return edit ? edit(scene) : makeSimulation(scene);
     };
 }
 
-// A chain whose particles 1, 2, ... alternate between masses 1/ratio and ratio... : w = 1/m.
+// A chain whose free particles 1, 2, ... alternate between masses 1/sqrt(ratio) and sqrt(ratio) kg (w = 1/m).
 std::unique_ptr<Simulation> chainWithMassRatio(Scene& s, double ratio) {
     MassSpringModel model = makeChain(s.chain);
     for (int i = 1; i < model.state.size(); ++i) model.state.w[i] = i % 2 ? std::sqrt(ratio) : 1.0 / std::sqrt(ratio);
@@ -67,16 +68,16 @@ Make clothCase(const std::string& file, std::function<void(Scene&)> scene, std::
 std::vector<ExtremeCase> extremeCases(const std::string& dir) {
     const std::string spring = dir + "/spring.json", chain = dir + "/chain.json", cloth = dir + "/mfn_hanging.json",
                       ground = dir + "/pbd_ground.json";
-    const std::vector<std::string> clothK = {"springs.structural.k", "springs.shear.k", "springs.bending.k"};
+    const std::vector<std::pair<std::string, double>> clothK = {{"springs.structural.k", 1.0}, {"springs.shear.k", 0.5}, {"springs.bending.k", 0.1}};
     std::vector<ExtremeCase> c;
-    c.push_back({"single spring", false, forceCase(spring, {}, {"spring.k"})});
+    c.push_back({"single spring", false, forceCase(spring, {}, {{"spring.k", 1.0}})});
     for (double ratio : {1.0, 1e3, 1e6})
         c.push_back({"chain, mass ratio " + num(ratio), false,
-                     forceCase(chain, {"chain.particles=6"}, {"chain.k"}, [ratio](Scene& s) { return chainWithMassRatio(s, ratio); })});
+                     forceCase(chain, {"chain.particles=6"}, {{"chain.k", 1.0}}, [ratio](Scene& s) { return chainWithMassRatio(s, ratio); })});
     c.push_back({"chain of zero-length springs, every particle coincident", false,
-                 forceCase(chain, {"chain.l0=0", "chain.particles=5"}, {"chain.k"})});
+                 forceCase(chain, {"chain.l0=0", "chain.particles=5"}, {{"chain.k", 1.0}})});
     c.push_back({"chain with two coincident particles (l0 > 0)", false,
-                 forceCase(chain, {"chain.particles=5"}, {"chain.k"}, [](Scene& s) -> std::unique_ptr<Simulation> {
+                 forceCase(chain, {"chain.particles=5"}, {{"chain.k", 1.0}}, [](Scene& s) -> std::unique_ptr<Simulation> {
                      MassSpringModel model = makeChain(s.chain);
                      model.state.x.col(3) = model.state.x.col(2);
                      return std::make_unique<MassSpringSimulation>(s, model);
