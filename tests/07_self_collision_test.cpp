@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "clothlab/exercise/07_self_collision.h"
+#include "clothlab/sim/sweeps.h"
 #include "test_util.h"
 
 using namespace clothlab;
@@ -349,18 +350,16 @@ TEST(Task7_6_LayerFriction, NothingWithoutFrictionContactOrFreeParticle) {
 // ---- Whole steps: a small PBD loop written here with your hash and separation ---------------------------
 namespace {
 // One step of particles under gravity g with self-collision only: predict, hash, pairs within 2h,
-// `iterations` sweeps of the separation to h, then v = (p - x)/dt.
+// `iterations` sweeps of the separation to h (the framework's sweep, sim/sweeps.h, calls your
+// projectSeparation for every pair closer than h), then v = (p - x)/dt.
 void selfCollisionStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const Vec3& g, double h, double dt, int iterations) {
     for (int i = 0; i < x.cols(); ++i)
         if (w[i] > 0) v.col(i) += dt * g;
     Matrix3X p = x + dt * v;
-    const std::vector<ParticlePair> pairs = findNeighbourPairs(p, buildSpatialHash(p, 2.0 * h, 2 * static_cast<int>(x.cols())), 2.0 * h);
-    for (int it = 0; it < iterations; ++it)
-        for (const ParticlePair& q : pairs) {
-            const PairCorrection c = projectSeparation(p.col(q.i), p.col(q.j), w[q.i], w[q.j], h);
-            p.col(q.i) += c.dpi;
-            p.col(q.j) += c.dpj;
-        }
+    std::vector<DistanceLink> pairs;  // separation distance h for every pair
+    for (const ParticlePair& q : findNeighbourPairs(p, buildSpatialHash(p, 2.0 * h, 2 * static_cast<int>(x.cols())), 2.0 * h))
+        pairs.push_back({q.i, q.j, h});
+    for (int it = 0; it < iterations; ++it) projectSelfCollisionSweep(pairs, x, w, 0.0, p);  // your projectSeparation per pair
     v = (p - x) / dt;
     x = p;
 }
