@@ -349,7 +349,7 @@ TEST(Task7_6_LayerFriction, NothingWithoutFrictionContactOrFreeParticle) {
 
 // ---- Whole steps: a small PBD loop written here with your hash and separation ---------------------------
 namespace {
-// One step of particles under gravity g with self-collision only: predict, hash, pairs within 2h,
+// One step of particles under gravity g with self-collision only: predict, hash, pairs within 2h (a wide margin),
 // `iterations` sweeps of the separation to h (the framework's sweep, sim/sweeps.h, calls your
 // projectSeparation for every pair closer than h), then v = (p - x)/dt.
 void selfCollisionStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const Vec3& g, double h, double dt, int iterations) {

@@ -130,7 +130,7 @@ struct Collider {
 /// Self-collision of the cloth with itself (stage 07; scene field `self_collision`).
 struct SelfCollisionSpec {
     bool enabled = false;       ///< whether particles of the cloth are kept apart from each other
-    double thickness = 0.01;    ///< separation distance h between two particles, m (pairs closer than h at rest keep their rest distance)
+    double thickness = 0.01;    ///< separation distance h between two particles, m (pairs closer than h at rest are left out)
     double friction = 0.0;      ///< friction coefficient μ ≥ 0 between two layers in contact
 };
 

@@ -8,11 +8,11 @@
 /// et al. 2007 §4.4: particles are sorted into the cells of an infinite grid of spacing s, the cells
 /// are folded into a table of T buckets by a hash function, and a particle's neighbours within a
 /// distance d ≤ s are found in the 3 × 3 × 3 cells around its own. Two particles i, j closer than
-/// their separation distance d_ij are pushed apart: the inequality constraint
-/// \f[ C(\vec p_i, \vec p_j) = |\vec p_i - \vec p_j| - d_{ij} \ \ge\ 0. \f]
-/// The framework (sim/pbd.cpp) chooses d_ij = min(h, |X_i − X_j|) with h the self-collision thickness
-/// and X the rest positions: particles closer than h at rest (the cloth's own neighbours) are never
-/// pushed further apart than they are at rest, so self-collision does not fight the distance constraints.
+/// the self-collision thickness h are pushed apart: the inequality constraint
+/// \f[ C(\vec p_i, \vec p_j) = |\vec p_i - \vec p_j| - h \ \ge\ 0. \f]
+/// The framework (sim/pbd.cpp) leaves out the pairs closer than h at rest, |X_i − X_j| < h with X the
+/// rest positions: those are the cloth's own neighbours, kept apart by its distance constraints, and
+/// pushing them to h would fight those constraints.
 #pragma once
 #include <vector>
 

@@ -67,8 +67,8 @@ private:
     void addExternalForces(const Matrix3X& x, const Matrix3X& v, Matrix3X& f);
     /// Line (8): the collision constraints of x → p against every collider.
     void generateCollisions(const Matrix3X& x, const Matrix3X& p);
-    /// Line (8) with self-collision: the spatial hash of p and the pairs within 2 h, each with its
-    /// separation distance min(h, rest distance) (stage 07).
+    /// Line (8) with self-collision: the spatial hash of p and the pairs within 1.5 h, each with the
+    /// separation distance h; pairs closer than h at rest are left out (stage 07).
     void findSelfCollisions(const Matrix3X& p);
     /// Line (10): one sweep over every constraint type the scene uses.
     void projectConstraints(Matrix3X& p);
@@ -84,8 +84,8 @@ private:
     std::vector<double> bendLambda_;         ///< XPBD multipliers of the stencils
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step
     double kDistance_ = 1.0, kBending_ = 1.0;    ///< per-iteration PBD stiffness k'
-    Matrix3X rest_;                              ///< rest positions X (self-collision: the rest distances)
-    std::vector<DistanceLink> selfPairs_;        ///< self-collision pairs of the current step, d = min(h, |X_i − X_j|)
+    Matrix3X rest_;                              ///< rest positions X (self-collision: which pairs are neighbours)
+    std::vector<DistanceLink> selfPairs_;        ///< self-collision pairs of the current step, d = h
     int hashPass_ = -1, selfPass_ = -1;          ///< self-collision passes
     int gravityPass_ = -1, airPass_ = -1, windPass_ = -1, stepPass_ = -1, generatePass_ = -1;
     int distancePass_ = -1, bendingPass_ = -1, collisionPass_ = -1, velocityPass_ = -1;

@@ -68,7 +68,7 @@ void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, con
 /// inequality |p_i − p_j| ≥ d): the separation of projectSeparation() (exercise 7.5), then, with μ > 0,
 /// the friction between the layers of layerFriction() (exercise 7.6) with the depth δ = d − |p_i − p_j|
 /// the separation removed.
-/// @param pairs  the pairs found at line (8) in this step, with d = min(h, rest distance)
+/// @param pairs  the pairs found at line (8) in this step, with d = h (pairs closer than h at rest left out)
 /// @param x      positions at the start of the step, 3 x N, m
 /// @param w      inverse masses, length N, 1/kg
 /// @param mu     friction coefficient μ ≥ 0 between the layers
