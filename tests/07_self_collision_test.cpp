@@ -102,11 +102,13 @@ TEST(Task7_1_CellOf, EveryPointLiesInItsCell) {
         for (int k = 0; k < 200; ++k) {
             const Vec3 p = G.point(300.0 * s);
             const Eigen::Vector3i c = cellOf(p, s);
-            for (int a = 0; a < 3; ++a)
-                if (!(c[a] * s <= p[a] * (1 + 1e-12) + 1e-300 && p[a] < (c[a] + 1) * s * (1 + 1e-12) + 1e-12 * s))
+            for (int a = 0; a < 3; ++a) {
+                const double tol = 1e-12 * (std::abs(p[a]) + s);  // rounding of p / s near a cell boundary
+                if (!(c[a] * s <= p[a] + tol && p[a] < (c[a] + 1) * s + tol))
                     return testing::AssertionFailure() << "The point " << str(p) << " m must lie in its cell: s c <= p < s (c + 1) per "
                                                           "coordinate with s = " << s << " m; coordinate " << a << " got cell " << c[a]
                                                        << ", which spans [" << c[a] * s << ", " << (c[a] + 1) * s << ") m.";
+            }
         }
         return testing::AssertionSuccess();
     });
