@@ -67,7 +67,7 @@ private:
     void addExternalForces(const Matrix3X& x, const Matrix3X& v, Matrix3X& f);
     /// Line (8): the collision constraints of x → p against every collider.
     void generateCollisions(const Matrix3X& x, const Matrix3X& p);
-    /// Line (8) with self-collision: the spatial hash of p and the pairs within 1.5 h, each with the
+    /// Line (8) with self-collision: the spatial hash of p and the pairs within 1.25 h, each with the
     /// separation distance h; pairs closer than h at rest are left out (stage 07).
     void findSelfCollisions(const Matrix3X& p);
     /// Line (10): one sweep over every constraint type the scene uses.
