@@ -37,6 +37,8 @@ expect_error huge         '(JSON syntax): number overflow' '{"model": "spring", 
 expect_error nan_set      'spring.k: expected a number' '{"model": "spring"}' --set spring.k=nan
 expect_error set_unknown  'solver.dtt: unknown key' '{"model": "spring"}' --set solver.dtt=0.1
 expect_error grid         'cloth.nx: must be between 2' '{"model": "cloth", "cloth": {"nx": 1}}'
+expect_error self_thick   'self_collision.thickness: must be > 0' '{"model": "cloth", "solver": {"method": "pbd"}, "self_collision": {"thickness": 0}}'
+expect_error self_method  'self_collision: works with method "pbd" or "xpbd"' '{"model": "cloth", "self_collision": {}}'
 expect_error pin_range    'cloth.pins\[0\]: particle index 100' '{"model": "cloth", "cloth": {"nx": 3, "ny": 3, "pins": [100]}}'
 expect_error chain_short  'chain.particles: must be between 2' '{"model": "chain", "chain": {"particles": 1}}'
 expect_error method       'solver.method: unknown value' '{"model": "spring", "solver": {"method": "magic"}}'

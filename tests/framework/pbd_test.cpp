@@ -55,6 +55,9 @@ TEST(Pbd, EachSceneRunsExactlyThePassesItNames) {
                         "collisions: velocity update"}},
         {"pbd_sphere", {"forces: gravity", step, "collisions: generate", "constraints: distance", "constraints: bending",
                         "constraints: collision", "collisions: velocity update"}},
+        {"pbd_self_collision", {"forces: gravity", step, "collisions: generate", "constraints: distance", "constraints: bending",
+                                "constraints: collision", "collisions: velocity update", "self-collision: hash and pairs",
+                                "constraints: self-collision"}},
     };
     for (const auto& [name, passes] : want) {
         auto sim = makeSimulation(pbdScene(name));
@@ -80,6 +83,10 @@ TEST(Pbd, MetricsBesideWallTime) {
     curtain->step();
     EXPECT_FALSE(hasMetric(*curtain, "rms_bending_error")) << "no bending, no bending metric";
     EXPECT_FALSE(hasMetric(*curtain, "max_penetration")) << "no colliders, no penetration metric";
+    EXPECT_FALSE(hasMetric(*curtain, "min_pair_distance")) << "no self-collision, no pair-distance metric";
+    auto folding = makeSimulation(pbdScene("pbd_self_collision"));
+    folding->step();
+    EXPECT_TRUE(hasMetric(*folding, "min_pair_distance")) << "self-collision: the closest pair is reported";
 }
 
 TEST(Pbd, ClothOnSphereRestsOnTopAndDrapes) {

@@ -326,6 +326,26 @@ const std::map<std::string, Claim>& claims() {
                             v.require(rim < sp.point.y() + 0.5 * sp.radius, "it drapes (its rim hangs below the sphere's upper half)",
                                       "lowest particle at " + num(rim) + " m");
                         }}},
+        {"pbd_self_collision", {{"dropped onto the ground folds onto itself", "keeps its layers h apart"}, 3.0,
+                                [](const Scene& s, const Run& r, Verdict& v) {
+                                    finiteAndPinned(r, v);
+                                    falls(r, 0.3, v);
+                                    // h apart: no two particles at least h apart at rest end closer than h (5 %); folds onto
+                                    // itself: particles far apart at rest (> 10 h) end in contact (closer than 1.5 h)
+                                    const double h = s.self_collision.thickness;
+                                    double closest = INFINITY;
+                                    int touching = 0;
+                                    for (int i = 0; i < r.end.size(); ++i)
+                                        for (int j = i + 1; j < r.end.size(); ++j) {
+                                            const double rest = (r.start.x.col(i) - r.start.x.col(j)).norm(), d = (r.end.x.col(i) - r.end.x.col(j)).norm();
+                                            if (rest >= h) closest = std::min(closest, d);
+                                            if (rest > 10 * h && d < 1.5 * h) ++touching;
+                                        }
+                                    v.require(closest >= 0.95 * h, "its layers stay h = " + num(h) + " m apart (no two particles at least h apart at rest closer than 0.95 h)",
+                                              "closest " + num(closest) + " m");
+                                    v.require(touching >= 20, "it folds onto itself (20 or more particles more than 10 h apart at rest end in contact, < 1.5 h)",
+                                              num(touching) + " such pairs");
+                                }}},
     };
     return c;
 }
@@ -381,6 +401,7 @@ TEST(SceneClaims, pbd_ground) { checkScene("pbd_ground"); }
 TEST(SceneClaims, pbd_bounce) { checkScene("pbd_bounce"); }
 TEST(SceneClaims, pbd_hanging) { checkScene("pbd_hanging"); }
 TEST(SceneClaims, pbd_sphere) { checkScene("pbd_sphere"); }
+TEST(SceneClaims, pbd_self_collision) { checkScene("pbd_self_collision"); }
 
 // The checks catch a scene that does not do what it says: the old vertical pbd_ground stands on its
 // edge, a flag without wind is not blown, a cloth that starts inside the sphere is caught inside it.
@@ -398,4 +419,6 @@ TEST(SceneClaims, ChecksCanFail) {
     EXPECT_FALSE(calm.failed.empty()) << "a flag without wind must fail \"blown by the wind\"";
     const Verdict loose = verdict("pbd_curtain", {"cloth.pins=[\"top-left\"]"});
     EXPECT_FALSE(loose.failed.empty()) << "a curtain held by one corner must fail \"pinned along its top edge\"";
+    const Verdict through = verdict("pbd_self_collision", {"self_collision.enabled=false"});
+    EXPECT_FALSE(through.failed.empty()) << "the folding curtain without self-collision (it passes through itself) must fail \"keeps its layers h apart\"";
 }

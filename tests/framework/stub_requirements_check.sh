@@ -107,6 +107,20 @@ read -r -d '' KEYS <<'EOF'
 06 text max(0, v_n - vnBefore)
 06 text min(|v_t|, mu dvn)
 06 text a quadratic in t
+07 code std::floor(p.x() / spacing)
+07 code ((h % tableSize) + tableSize) % tableSize
+07 code int64_t{cell.x()} * 73856093
+07 code --hash.cellStart[bucket[i]]
+07 code hashCell(c + Eigen::Vector3i(dx, dy, dz), tableSize)
+07 code std::find(visited.begin(), visited.end(), b)
+07 code wi / wsum * push * n
+07 code r - r.dot(n) * n
+07 code rt *= mu * depth / slip
+07 text floor(p / s)
+07 text (x p1) XOR (y p2) XOR (z p3)
+07 text 73856093
+07 text j > i
+07 text w_i / (w_i + w_j)
 EOF
 
 squash() { tr -d '[:space:]'; }                                 # whitespace-insensitive

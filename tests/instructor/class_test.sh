@@ -58,7 +58,7 @@ add_mistake() {  # add_mistake NN_dir NAME
 add_mistake 01_hooke sign_flipped
 # Names that clash once made safe for file names: each keeps its own points and files.
 mkdir -p "$class/bob smith"; cp -r "$root/exercises/01_hooke" "$class/bob smith/"
-expect_row "bob smith" "02 not submitted; 03 not submitted; 04 not submitted; 05 not submitted; 06 not submitted" $(zero_all)
+expect_row "bob smith" "02 not submitted; 03 not submitted; 04 not submitted; 05 not submitted; 06 not submitted; 07 not submitted" $(zero_all)
 reference "$class/bob_smith"; expect_row bob_smith ok
 if [[ $size == full ]]; then
   for i in 1 2 3 4 5 6 7; do reference "$class/ref_student$i"; expect_row "ref_student$i" ok; done
@@ -66,7 +66,7 @@ if [[ $size == full ]]; then
   for i in 1 2 3; do mkdir -p "$class/stub_$i"; cp -r "$root"/exercises/[0-9][0-9]_* "$class/stub_$i/"; expect_row "stub_$i" ok $(zero_all); done
   reference "$tmp/tar/gina"; (cd "$tmp/tar" && tar -czf "$class/tar_gz.tar.gz" gina) || fail "tar"; expect_row tar_gz ok
   mkdir -p "$class/missing_stages"; cp -r "$root"/solutions/0[1-3]_* "$class/missing_stages/"
-  expect_row missing_stages "04 not submitted; 05 not submitted; 06 not submitted" 04=0 05=0 06=0
+  expect_row missing_stages "04 not submitted; 05 not submitted; 06 not submitted; 07 not submitted" 04=0 05=0 06=0 07=0
   mkdir -p "$class/no_layout"; echo "my homework" >"$class/no_layout/README.txt"
   expect_row no_layout "error" $(zero_all)
   add_mistake 02_mfn shear_uses_structural_group

@@ -472,6 +472,12 @@ void App::panelParameters() {
                 else changed |= sliderD((std::string(name) + " k").c_str(), g->stiffness, 0, 1, "%.3f");
                 ImGui::PopID();
             }
+        if (position_based) {  // stage 07: the cloth against itself
+            changed |= ImGui::Checkbox("##self", &scene_.self_collision.enabled);
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(155);
+            changed |= sliderD("self-collision h [m]", scene_.self_collision.thickness, 0.002, 0.1, "%.3f", true);
+        }
     }
     // Two quantities, two sliders: the air damping force (every method) and dampVelocities' k_damping (pbd, xpbd).
     changed |= sliderD("air damping [N s/m]", scene_.forces.air_damping, 0, 5.0, "%.3f");

@@ -310,6 +310,12 @@ Scene readScene(const json& doc, const std::string& file) {
             s.colliders.push_back(readCollider(Reader((*cs)[i], "colliders[" + std::to_string(i) + "]", file)));
     }
 
+    Reader self = r.object("self_collision");
+    s.self_collision.enabled = self.boolean("enabled", r.has("self_collision"));
+    s.self_collision.thickness = self.number("thickness", s.self_collision.thickness, 0, INFINITY, true);
+    s.self_collision.friction = self.number("friction", s.self_collision.friction, 0);
+    self.finish();
+
     Reader f = r.object("forces");
     s.forces.gravity = f.vec3("gravity", s.forces.gravity);
     if (f.has("damping"))  // one name had two meanings (N s/m and [0, 1]) before it was split
@@ -333,6 +339,8 @@ Scene readScene(const json& doc, const std::string& file) {
     if (isPositionBased(s.solver.method) && s.model != Model::Cloth)
         sv.fail("method", std::string("\"") + methodName(s.solver.method) + "\" needs model \"cloth\" (got \"" + model + "\")");
     sv.finish();
+    if (s.self_collision.enabled && !isPositionBased(s.solver.method))
+        r.fail("self_collision", std::string("works with method \"pbd\" or \"xpbd\" (got \"") + methodName(s.solver.method) + "\")");
 
     Reader pbd = r.object("pbd");
     s.pbd.damping = pbd.number("damping", s.pbd.damping, 0, 1);

@@ -58,13 +58,22 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         generatePass_ = timer_.add("collisions: generate");
         collisionPass_ = timer_.add("constraints: collision");
         velocityPass_ = timer_.add("collisions: velocity update");
-        callbacks_.generateCollisionConstraints = [this](const Matrix3X& x, const Matrix3X& p) { generateCollisions(x, p); };
         callbacks_.velocityUpdate = [this](const Matrix3X&, Matrix3X& v) {
             auto timed = timer_.time(velocityPass_);
             velocityUpdate(v, contacts_);  // exercise 6.4
         };
     }
-    if (distancePass_ >= 0 || bendingPass_ >= 0 || collisionPass_ >= 0)
+    if (scene.self_collision.enabled) {  // stage 07: the cloth against itself
+        hashPass_ = timer_.add("self-collision: hash and pairs");
+        selfPass_ = timer_.add("constraints: self-collision");
+        rest_ = P_.x;
+    }
+    if (generatePass_ >= 0 || hashPass_ >= 0)
+        callbacks_.generateCollisionConstraints = [this](const Matrix3X& x, const Matrix3X& p) {
+            if (generatePass_ >= 0) generateCollisions(x, p);
+            if (hashPass_ >= 0) findSelfCollisions(p);
+        };
+    if (distancePass_ >= 0 || bendingPass_ >= 0 || collisionPass_ >= 0 || selfPass_ >= 0)
         callbacks_.projectConstraints = [this](Matrix3X& p) { projectConstraints(p); };
     initMeasures();
 }
@@ -122,6 +131,21 @@ void PbdSimulation::generateCollisions(const Matrix3X& x, const Matrix3X& p) {
     }
 }
 
+void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
+    auto timed = timer_.time(hashPass_);
+    const double h = scene_.self_collision.thickness;
+    const int tableSize = 2 * std::max(1, P_.size());
+    selfPairs_.clear();
+    // Pairs within 1.25 h: a margin of h/4 for the motion during the iterations (exercises 7.3, 7.4).
+    // Pairs closer than h at rest are the cloth's own neighbours, left to its distance constraints.
+    const double query = 1.25 * h;
+    for (const ParticlePair& q : findNeighbourPairs(p, buildSpatialHash(p, query, tableSize), query)) {
+        if (P_.w[q.i] <= 0.0 && P_.w[q.j] <= 0.0) continue;
+        if ((rest_.col(q.i) - rest_.col(q.j)).squaredNorm() < h * h) continue;
+        selfPairs_.push_back({q.i, q.j, h});
+    }
+}
+
 void PbdSimulation::projectConstraints(Matrix3X& p) {
     const VectorX& w = P_.w;
     const double dt2 = subDt_ * subDt_;
@@ -138,6 +162,10 @@ void PbdSimulation::projectConstraints(Matrix3X& p) {
     if (collisionPass_ >= 0) {
         auto timed = timer_.time(collisionPass_);
         projectCollisionSweep(contacts_, w, scene_.solver.thickness, p);
+    }
+    if (selfPass_ >= 0) {
+        auto timed = timer_.time(selfPass_);
+        projectSelfCollisionSweep(selfPairs_, P_.x, w, scene_.self_collision.friction, p);  // exercises 7.5, 7.6
     }
 }
 
@@ -161,9 +189,19 @@ double PbdSimulation::maxPenetration() const {
     return m;
 }
 
+double PbdSimulation::minPairDistance() const {
+    const double h = scene_.self_collision.thickness;
+    double m2 = INFINITY;
+    for (int i = 0; i < P_.size(); ++i)
+        for (int j = i + 1; j < P_.size(); ++j)
+            if ((rest_.col(i) - rest_.col(j)).squaredNorm() >= h * h) m2 = std::min(m2, (P_.x.col(i) - P_.x.col(j)).squaredNorm());
+    return std::sqrt(m2);
+}
+
 void PbdSimulation::addMetrics(std::vector<Metric>& m) const {
     if (!stencils_.empty()) m.push_back({"rms_bending_error", rmsBendingError(), "rad"});
     if (!scene_.colliders.empty()) m.push_back({"max_penetration", maxPenetration(), "m"});
+    if (selfPass_ >= 0) m.push_back({"min_pair_distance", minPairDistance(), "m"});
 }
 
 }  // namespace clothlab

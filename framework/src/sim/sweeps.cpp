@@ -54,4 +54,19 @@ void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, con
     for (const CollisionConstraint& c : contacts) p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
 }
 
+void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,
+                               Matrix3X& p) {
+    for (const DistanceLink& L : pairs) {
+        const double depth = L.d - (p.col(L.i) - p.col(L.j)).norm();
+        if (depth <= 0.0) continue;
+        const PairCorrection c = projectSeparation(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d);
+        p.col(L.i) += c.dpi;
+        p.col(L.j) += c.dpj;
+        if (mu <= 0.0) continue;
+        const PairCorrection f = layerFriction(p.col(L.i), p.col(L.j), x.col(L.i), x.col(L.j), w[L.i], w[L.j], mu, depth);
+        p.col(L.i) += f.dpi;
+        p.col(L.j) += f.dpj;
+    }
+}
+
 }  // namespace clothlab

@@ -1,4 +1,4 @@
-// A submission written to test the submission process (remote_test.cpp): every function of the six
+// A submission written to test the submission process (remote_test.cpp): every function of the seven
 // stages, each doing what a scenario of the test asks for (a computation, a crash, an exception, a
 // forbidden system call, a forged reply, a wrong-sized result, calls of its callbacks).
 #include <fcntl.h>
@@ -15,6 +15,7 @@
 #include "clothlab/exercise/04_distance.h"
 #include "clothlab/exercise/05_bending.h"
 #include "clothlab/exercise/06_collision.h"
+#include "clothlab/exercise/07_self_collision.h"
 
 namespace clothlab {
 
@@ -129,6 +130,15 @@ bool generateSphereConstraint(int, const Vec3&, const Vec3&, const Collider&, do
 Vec3 projectCollisionConstraint(const Vec3&, double, double, const CollisionConstraint&) { throw NotImplemented("6.3"); }
 void velocityUpdate(Matrix3X& v, const std::vector<CollisionConstraint>& contacts) {
     for (const auto& c : contacts) v.col(c.i) = c.n;
+}
+
+Eigen::Vector3i cellOf(const Vec3&, double) { throw NotImplemented("7.1"); }
+int hashCell(const Eigen::Vector3i&, int) { throw NotImplemented("7.2"); }
+SpatialHash buildSpatialHash(const Matrix3X&, double, int) { throw NotImplemented("7.3"); }
+std::vector<ParticlePair> findNeighbourPairs(const Matrix3X&, const SpatialHash&, double) { throw NotImplemented("7.4"); }
+PairCorrection projectSeparation(const Vec3&, const Vec3&, double, double, double) { throw NotImplemented("7.5"); }
+PairCorrection layerFriction(const Vec3&, const Vec3&, const Vec3&, const Vec3&, double, double, double, double) {
+    throw NotImplemented("7.6");
 }
 
 }  // namespace clothlab

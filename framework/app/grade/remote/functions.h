@@ -2,7 +2,7 @@
 // The submission process serves all of them (remote/serve_main.cpp); the test process calls those
 // of the stages whose code comes from the submission (remote/proxies_NN.cpp).
 //
-// 901–905 are the framework's sweeps (sim/sweeps.h): loops that call a stage's function once per
+// 901–906 are the framework's sweeps (sim/sweeps.h): loops that call a stage's function once per
 // constraint, many times per step. When that stage's code is the submission's, the test process
 // sends the whole sweep (one call per iteration, not one per constraint): the proxies define
 // __wrap_<sweep>, and the grader links with -Wl,--wrap=<sweep>. The result is the positions the
@@ -34,11 +34,18 @@
     X(602, generateSphereConstraint)                                                                   \
     X(603, projectCollisionConstraint)                                                                 \
     X(604, velocityUpdate)                                                                             \
+    X(701, cellOf)                                                                                     \
+    X(702, hashCell)                                                                                   \
+    X(703, buildSpatialHash)                                                                           \
+    X(704, findNeighbourPairs)                                                                         \
+    X(705, projectSeparation)                                                                          \
+    X(706, layerFriction)                                                                              \
     X(901, projectDistanceSweep)                                                                       \
     X(902, projectDistanceSweepXpbd)                                                                   \
     X(903, projectBendingSweep)                                                                        \
     X(904, projectBendingSweepXpbd)                                                                    \
-    X(905, projectCollisionSweep)
+    X(905, projectCollisionSweep)                                                                      \
+    X(906, projectSelfCollisionSweep)
 
 namespace clothlab::remote {
 #define CLOTHLAB_REMOTE_ID(id, name) k_##name = id,

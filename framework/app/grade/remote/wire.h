@@ -24,6 +24,7 @@
 #include "clothlab/exercise/04_distance.h"
 #include "clothlab/exercise/05_bending.h"
 #include "clothlab/exercise/06_collision.h"
+#include "clothlab/exercise/07_self_collision.h"
 #include "clothlab/sim/sweeps.h"
 
 namespace clothlab::remote {
@@ -87,6 +88,9 @@ template <class F> void fields(F& f, DistanceLink& l) { f(l.i, l.j, l.d); }
 template <class F> void fields(F& f, CollisionConstraint& c) {
     f(c.i, c.q, c.n, c.start, c.vnBefore, c.friction, c.restitution);
 }
+template <class F> void fields(F& f, SpatialHash& h) { f(h.spacing, h.cellStart, h.cellEntries); }
+template <class F> void fields(F& f, ParticlePair& q) { f(q.i, q.j); }
+template <class F> void fields(F& f, PairCorrection& c) { f(c.dpi, c.dpj); }
 
 /// A struct crosses the wire field by field: it is one that has a fields() above.
 struct FieldProbe {

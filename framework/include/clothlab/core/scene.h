@@ -127,6 +127,13 @@ struct Collider {
     double restitution = 0.0;  ///< coefficient of restitution e in [0, 1]
 };
 
+/// Self-collision of the cloth with itself (stage 07; scene field `self_collision`).
+struct SelfCollisionSpec {
+    bool enabled = false;       ///< whether particles of the cloth are kept apart from each other
+    double thickness = 0.01;    ///< separation distance h between two particles, m (pairs closer than h at rest are left out)
+    double friction = 0.0;      ///< friction coefficient μ ≥ 0 between two layers in contact
+};
+
 /// External forces.
 struct ForcesSpec {
     Vec3 gravity{0, -9.81, 0};  ///< gravitational acceleration g, m/s²
@@ -179,6 +186,7 @@ struct Scene {
     ProvotSpec provot;           ///< strain limiting for the mass-spring network
     ClothConstraints constraints;///< position-based constraints (pbd, xpbd)
     std::vector<Collider> colliders; ///< static colliders
+    SelfCollisionSpec self_collision; ///< the cloth against itself (pbd, xpbd)
     ForcesSpec forces;           ///< gravity, air damping, wind
     PbdSpec pbd;                 ///< dampVelocities (pbd, xpbd)
     SolverSpec solver;           ///< method and step

@@ -10,14 +10,15 @@
 /// | (5) | v_i ← v_i + Δt w_i f_ext(x_i) | exercises/03_pbd_loop/pbd_loop.cpp: pbdStep() (exercise 3.3), f_ext from sim/pbd.cpp: PbdSimulation::addExternalForces() |
 /// | (6) | dampVelocities(v_1, ..., v_N) | exercises/03_pbd_loop/pbd_loop.cpp: dampVelocities() (exercise 3.1) |
 /// | (7) | p_i ← x_i + Δt v_i | exercises/03_pbd_loop/pbd_loop.cpp: pbdStep() |
-/// | (8) | generateCollisionConstraints(x_i → p_i) | sim/pbd.cpp: PbdSimulation::generateCollisions(), calling exercises/06_collision/collision.cpp (exercises 6.1, 6.2) |
-/// | (9)–(11) | loop solverIterations times: projectConstraints(C_1, ..., C_M+Mcoll, p_1, ..., p_N) | pbdStep() calling sim/pbd.cpp: PbdSimulation::projectConstraints(), which runs the sweeps of sim/sweeps.cpp over exercises 4.3, 5.2, 6.3 (stiffness per iteration: exercise 3.2) |
+/// | (8) | generateCollisionConstraints(x_i → p_i) | sim/pbd.cpp: PbdSimulation::generateCollisions(), calling exercises/06_collision/collision.cpp (exercises 6.1, 6.2); with self-collision PbdSimulation::findSelfCollisions(), calling exercises/07_self_collision/self_collision.cpp (exercises 7.1–7.4) |
+/// | (9)–(11) | loop solverIterations times: projectConstraints(C_1, ..., C_M+Mcoll, p_1, ..., p_N) | pbdStep() calling sim/pbd.cpp: PbdSimulation::projectConstraints(), which runs the sweeps of sim/sweeps.cpp over exercises 4.3, 5.2, 6.3, 7.5–7.6 (stiffness per iteration: exercise 3.2) |
 /// | (12)–(15) | v_i ← (p_i − x_i)/Δt, x_i ← p_i | exercises/03_pbd_loop/pbd_loop.cpp: pbdStep() |
 /// | (16) | velocityUpdate(v_1, ..., v_N) | exercises/06_collision/collision.cpp: velocityUpdate() (exercise 6.4) |
 /// | (17) | end loop | sim/pbd.cpp: the end of PbdSimulation::step() |
 ///
 /// Only what the scene enables becomes a callback and a timed pass: a scene without colliders never
-/// calls the collision code, one without constraints.bending never calls the bending code.
+/// calls the collision code, one without constraints.bending never calls the bending code, one without
+/// self_collision never calls stage 07.
 /// XPBD is the same loop with the sweeps of xpbd.h (a multiplier λ per constraint, reset every substep).
 #pragma once
 #include <vector>
@@ -25,6 +26,7 @@
 #include "clothlab/exercise/03_pbd_loop.h"
 #include "clothlab/exercise/05_bending.h"
 #include "clothlab/exercise/06_collision.h"
+#include "clothlab/exercise/07_self_collision.h"
 #include "clothlab/sim/extensions.h"
 #include "clothlab/sim/simulation.h"
 #include "clothlab/sim/sweeps.h"
@@ -47,13 +49,17 @@ public:
     double rmsBendingError() const;
     /// Deepest violation of a collision constraint over particles and colliders, max(0, h − dist), m.
     double maxPenetration() const;
+    /// The closest distance between two particles that are at least h apart at rest (h =
+    /// self_collision.thickness), m; brute force over all N(N − 1)/2 pairs, independent of stage 07.
+    double minPairDistance() const;
     /// The distance constraints (empty unless constraints.distance is enabled), in projection order.
     const std::vector<DistanceLink>& distanceLinks() const { return links_; }
     /// The bending stencils (empty unless constraints.bending is enabled), in projection order.
     const std::vector<BendingStencil>& bendingStencilList() const { return stencils_; }
 
 protected:
-    /// rms_bending_error (with bending constraints) and max_penetration (with colliders).
+    /// rms_bending_error (with bending constraints), max_penetration (with colliders) and
+    /// min_pair_distance (with self-collision).
     void addMetrics(std::vector<Metric>& m) const override;
 
 private:
@@ -61,6 +67,9 @@ private:
     void addExternalForces(const Matrix3X& x, const Matrix3X& v, Matrix3X& f);
     /// Line (8): the collision constraints of x → p against every collider.
     void generateCollisions(const Matrix3X& x, const Matrix3X& p);
+    /// Line (8) with self-collision: the spatial hash of p and the pairs within 1.25 h, each with the
+    /// separation distance h; pairs closer than h at rest are left out (stage 07).
+    void findSelfCollisions(const Matrix3X& p);
     /// Line (10): one sweep over every constraint type the scene uses.
     void projectConstraints(Matrix3X& p);
 
@@ -75,6 +84,9 @@ private:
     std::vector<double> bendLambda_;         ///< XPBD multipliers of the stencils
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step
     double kDistance_ = 1.0, kBending_ = 1.0;    ///< per-iteration PBD stiffness k'
+    Matrix3X rest_;                              ///< rest positions X (self-collision: which pairs are neighbours)
+    std::vector<DistanceLink> selfPairs_;        ///< self-collision pairs of the current step, d = h
+    int hashPass_ = -1, selfPass_ = -1;          ///< self-collision passes
     int gravityPass_ = -1, airPass_ = -1, windPass_ = -1, stepPass_ = -1, generatePass_ = -1;
     int distancePass_ = -1, bendingPass_ = -1, collisionPass_ = -1, velocityPass_ = -1;
 };

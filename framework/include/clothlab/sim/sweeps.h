@@ -4,13 +4,14 @@
 ///
 /// Each sweep visits its constraints in the given order and moves p in place right after each
 /// projection (Gauss–Seidel). The projections are the stage functions (the student's or the
-/// reference code): exercise 4.3 (distance), 5.2 (bending), 6.3 (collision), or their XPBD forms
-/// in xpbd.h.
+/// reference code): exercise 4.3 (distance), 5.2 (bending), 6.3 (collision), 7.5 and 7.6
+/// (self-collision), or their XPBD forms in xpbd.h.
 #pragma once
 #include <vector>
 
 #include "clothlab/exercise/05_bending.h"
 #include "clothlab/exercise/06_collision.h"
+#include "clothlab/exercise/07_self_collision.h"
 
 namespace clothlab {
 
@@ -62,5 +63,17 @@ void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const 
 /// @param h         collision thickness h, m
 /// @param p         predicted positions, 3 x N, m (updated in place)
 void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p);
+
+/// Self-collision sweep: for every pair (i, j) with separation distance d (a DistanceLink read as the
+/// inequality |p_i − p_j| ≥ d): the separation of projectSeparation() (exercise 7.5), then, with μ > 0,
+/// the friction between the layers of layerFriction() (exercise 7.6) with the depth δ = d − |p_i − p_j|
+/// the separation removed.
+/// @param pairs  the pairs found at line (8) in this step, with d = h (pairs closer than h at rest left out)
+/// @param x      positions at the start of the step, 3 x N, m
+/// @param w      inverse masses, length N, 1/kg
+/// @param mu     friction coefficient μ ≥ 0 between the layers
+/// @param p      predicted positions, 3 x N, m (updated in place)
+void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,
+                               Matrix3X& p);
 
 }  // namespace clothlab
