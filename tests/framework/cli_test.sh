@@ -46,6 +46,29 @@ expect_error not_object   '(top level): expected an object' '[1, 2, 3]'
 expect_error pbd_damping  'pbd.damping: must be <= 1 (got 2)' '{"model": "cloth", "pbd": {"damping": 2}, "solver": {"method": "pbd"}}'
 expect_error old_damping  'forces.damping: renamed: use forces.air_damping' '{"model": "cloth", "forces": {"damping": 0.1}}'
 
+# Extreme input (docs/reliability.md "The fuzzed scene loader"; the limits: docs/scenes.md "Limits").
+expect_error big_number   'solver.dt: must be <= 10 (got 1e+308)' '{"model": "spring", "solver": {"dt": 1e308}}'
+expect_error neg_zero_mass'spring.mass: must be > 0 (got -0)' '{"model": "spring", "spring": {"mass": -0.0}}'
+expect_error neg_zero_dt  'solver.dt: must be > 0 (got -0)' '{"model": "spring"}' --set solver.dt=-0
+deep=$(printf '%.0s[' {1..100000}); expect_error deep_nesting '(JSON syntax): nested deeper than 64 levels' "{\"model\": $deep"
+expect_error deep_set     'model: nested deeper than 64 levels' '{"model": "spring"}' --set "model=$deep"
+expect_error not_utf8     '(JSON syntax): ' $'{"model": "spr\xff\xfeing"}'
+expect_error not_utf8_set 'spring.k: expected a number (got string' '{"model": "spring"}' --set $'spring.k=\xff'
+expect_error newline_key  'spring.a\\x0ab: unknown key' '{"model": "spring"}' --set $'spring.a\nb=1'
+expect_error grid_huge    'cloth.nx: must be between 2 and 4096 (got 100000)' '{"model": "cloth", "cloth": {"nx": 100000, "ny": 100000}}'
+expect_error grid_area    'cloth.ny: grid too large (nx\*ny > 4,000,000)' '{"model": "cloth", "cloth": {"nx": 4096, "ny": 4096}}'
+expect_error chain_huge   'chain.particles: must be between 2 and 100000 (got 18446744073709551615)' '{"model": "chain", "chain": {"particles": 18446744073709551615}}'
+expect_error pin_negative 'cloth.pins\[1\]: particle index -1 outside the grid (0..8)' '{"model": "cloth", "cloth": {"nx": 3, "ny": 3, "pins": [0, -1]}}'
+expect_error pin_u64      'cloth.pins\[0\]: particle index 18446744073709551615 outside' '{"model": "cloth", "cloth": {"nx": 3, "ny": 3, "pins": [18446744073709551615]}}'
+expect_error set_inf      'spring.k: expected a number (got string "inf")' '{"model": "spring"}' --set spring.k=inf
+expect_error set_overflow 'spring.k: expected a number (got string "1e999")' '{"model": "spring"}' --set spring.k=1e999
+expect_error set_index    'colliders.3.radius: no element "3" in this array' '{"model": "cloth", "colliders": [{"type": "plane"}]}' --set colliders.3.radius=1
+# A file over the size limit is refused before it is read (a sparse 100 MB file).
+truncate -s 100M "$tmp/big.json"
+"$exe" run "$tmp/big.json" >"$tmp/out" 2>"$tmp/err"
+if [[ $? -eq 1 && $(wc -l <"$tmp/err") -eq 1 ]] && grep -q "^error: $tmp/big.json: (file): larger than the limit of 16 MiB (104857600 bytes)" "$tmp/err"; then ok; else bad "100 MB file: $(cat "$tmp/err")"; fi
+rm -f "$tmp/big.json"
+
 # A missing file.
 "$exe" run "$tmp/nope.json" >"$tmp/out" 2>"$tmp/err"
 if [[ $? -eq 1 ]] && grep -q "^error: $tmp/nope.json: (file): cannot open" "$tmp/err"; then ok; else bad "missing file: $(cat "$tmp/err")"; fi
