@@ -11,9 +11,12 @@ for input in "$dir"/*.json; do
   name=$(basename "$input" .json)
   [[ -f $dir/$name.expect ]] || { fail=$((fail+1)); echo "FAIL: $name: no $name.expect"; continue; }
   expect=$(head -1 "$dir/$name.expect")
-  sed -z -n 1p "$input" | tr -d '\0' >"$tmp/$name.json"
-  sets=()
-  while IFS= read -r -d '' kv; do sets+=(--set "$kv"); done < <(sed -z -n '2,$p' "$input")
+  # Split as scene_fuzz does: the parts between NUL bytes (a NUL at the end leaves an empty override).
+  { cat "$input"; printf '\0'; } >"$tmp/raw"
+  sets=(); first=1
+  while IFS= read -r -d '' part; do
+    if ((first)); then printf '%s' "$part" >"$tmp/$name.json"; first=0; else sets+=(--set "$part"); fi
+  done <"$tmp/raw"
   "$exe" run "$tmp/$name.json" --steps 1 --quiet "${sets[@]}" >"$tmp/out" 2>"$tmp/err"
   code=$?
   if [[ $expect == loads ]]; then
