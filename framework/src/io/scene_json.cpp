@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -25,7 +26,7 @@ std::string join(const std::vector<std::string>& v) {
 }
 
 std::string describe(const json& j) {
-    std::string s = j.dump();
+    std::string s = j.dump(-1, ' ', false, json::error_handler_t::replace);  // bytes that are not UTF-8 print as U+FFFD
     if (s.size() > 40) s = s.substr(0, 37) + "...";
     return std::string(j.type_name()) + " " + s;
 }
@@ -67,7 +68,7 @@ public:
         if (!v) return def;
         if (!v->is_number_integer()) fail(key, "expected a whole number (got " + describe(*v) + ")");
         const long long x = v->get<long long>();
-        if (x < lo || x > hi) fail(key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + " (got " + std::to_string(x) + ")");
+        if (x < lo || x > hi) fail(key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + " (got " + v->dump() + ")");
         return static_cast<int>(x);
     }
     bool boolean(const std::string& key, bool def) {
@@ -167,7 +168,7 @@ std::vector<int> readPins(Reader& r, const ClothSpec& c) {
         if (e.is_number_integer()) {
             const long long i = e.get<long long>();
             if (i < 0 || i >= static_cast<long long>(nx) * ny)
-                r.fail(key, "particle index " + std::to_string(i) + " outside the grid (0.." + std::to_string(nx * ny - 1) + ")");
+                r.fail(key, "particle index " + e.dump() + " outside the grid (0.." + std::to_string(nx * ny - 1) + ")");
             pins.push_back(static_cast<int>(i));
         } else if (e.is_string()) {
             const std::string s = e.get<std::string>();
@@ -240,13 +241,26 @@ Collider readCollider(Reader r) {
     return c;
 }
 
+/// Limits of a scene file (docs/scenes.md "Limits"), checked before the file is read or parsed.
+constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;  // 16 MiB
+constexpr int kMaxDepth = 64;                          // nesting of arrays and objects
+
+/// json::parse with a nesting limit (nlohmann's dump() and comparisons recurse once per level).
+json parseLimited(const std::string& text, const std::string& file, const std::string& field, bool allow_exceptions) {
+    const auto depthCheck = [&](int depth, json::parse_event_t, json&) {
+        if (depth >= kMaxDepth) throw InputError(file, field, "nested deeper than " + std::to_string(kMaxDepth) + " levels");
+        return true;
+    };
+    return json::parse(text, depthCheck, allow_exceptions);
+}
+
 /// Sets a dotted key of the document to a value given on the command line.
 void applyOverride(json& doc, const std::string& kv, const std::string& file) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0)
-        throw InputError(file, kv, "--set expects key=value, e.g. solver.dt=0.01");
+        throw InputError(file, "(--set)", "--set expects key=value, e.g. solver.dt=0.01 (got \"" + kv + "\")");
     const std::string key = kv.substr(0, eq), text = kv.substr(eq + 1);
-    json value = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    json value = parseLimited(text, file, key, /*allow_exceptions=*/false);
     if (value.is_discarded()) value = text;  // plain words are strings
     json* node = &doc;
     std::string::size_type start = 0;
@@ -365,9 +379,11 @@ Scene readScene(const json& doc, const std::string& file) {
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
+    if (text.size() > kMaxSceneBytes)
+        throw InputError(file, "(file)", "larger than the limit of 16 MiB (" + std::to_string(text.size()) + " bytes)");
     json doc;
     try {
-        doc = json::parse(text);
+        doc = parseLimited(text, file, "(JSON syntax)", /*allow_exceptions=*/true);
     } catch (const json::exception& e) {  // syntax errors and numbers too large for a double
         throw InputError(file, "(JSON syntax)", std::string(e.what()).substr(std::string(e.what()).find(']') + 2));
     }
@@ -378,6 +394,9 @@ Scene parseScene(const std::string& text, const std::string& file, const std::ve
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
     std::ifstream in(path);
     if (!in) throw InputError(path, "(file)", "cannot open the file");
+    std::error_code ec;
+    if (const std::uintmax_t n = std::filesystem::file_size(path, ec); !ec && n > kMaxSceneBytes)
+        throw InputError(path, "(file)", "larger than the limit of 16 MiB (" + std::to_string(n) + " bytes)");
     std::stringstream buf;
     buf << in.rdbuf();
     return parseScene(buf.str(), path, overrides);
