@@ -103,7 +103,8 @@ MeshShape::MeshShape(TriangleMesh mesh) : mesh_(std::move(mesh)) {
     for (size_t t = 0; t < T; ++t) {
         const auto& f = mesh_.triangles[t];
         for (int k = 0; k < 3; ++k) {
-            edgeSum[std::minmax(f[k], f[(k + 1) % 3])] += faceNormal_.col(static_cast<Eigen::Index>(t));
+            const auto [it, fresh] = edgeSum.try_emplace(std::minmax(f[k], f[(k + 1) % 3]), Vec3::Zero());  // Eigen does not zero
+            it->second += faceNormal_.col(static_cast<Eigen::Index>(t));
             const Vec3 a = mesh_.vertices.col(f[(k + 1) % 3]) - mesh_.vertices.col(f[k]);
             const Vec3 b = mesh_.vertices.col(f[(k + 2) % 3]) - mesh_.vertices.col(f[k]);
             const double angle = std::atan2(a.cross(b).norm(), a.dot(b));  // the face's angle at vertex f[k]
@@ -115,7 +116,7 @@ MeshShape::MeshShape(TriangleMesh mesh) : mesh_(std::move(mesh)) {
             edgeNormal_.col(static_cast<Eigen::Index>(3 * t + k)) = edgeSum[std::minmax(mesh_.triangles[t][k], mesh_.triangles[t][(k + 1) % 3])];
     order_.resize(T);
     std::iota(order_.begin(), order_.end(), 0);
-    nodes_.reserve(2 * T / 2 + 1);
+    nodes_.reserve(T / 2 + 1);
     build(0, static_cast<int>(T));
 }
 
