@@ -31,25 +31,31 @@ def box(verts, tris, c, e):
         tris.append((base + q[0], base + q[2], base + q[3]))
 
 
-def ellipsoid(verts, tris, c, r, slices=32, stacks=16):
-    """A UV ellipsoid, centre c, radii r, outward triangles (poles shared)."""
-    base = len(verts)
-    verts.append((c[0], c[1] - r[1], c[2]))  # south pole
-    for j in range(1, stacks):
-        phi = -math.pi / 2 + math.pi * j / stacks
-        for i in range(slices):
-            th = 2 * math.pi * i / slices
-            verts.append((c[0] + r[0] * math.cos(phi) * math.cos(th), c[1] + r[1] * math.sin(phi), c[2] - r[2] * math.cos(phi) * math.sin(th)))
-    verts.append((c[0], c[1] + r[1], c[2]))  # north pole
-    ring = lambda j, i: base + 1 + (j - 1) * slices + i % slices
-    north = len(verts) - 1
-    for i in range(slices):
-        tris.append((base, ring(1, i + 1), ring(1, i)))
-        tris.append((north, ring(stacks - 1, i), ring(stacks - 1, i + 1)))
-    for j in range(1, stacks - 1):
-        for i in range(slices):
-            tris.append((ring(j, i), ring(j, i + 1), ring(j + 1, i + 1)))
-            tris.append((ring(j, i), ring(j + 1, i + 1), ring(j + 1, i)))
+def lathe(profile, segments=40):
+    """One closed surface of revolution with elliptic sections: profile rows (y, r_x, r_z) from the bottom
+    pole (radii 0) to the top pole (radii 0); outward triangles."""
+    verts, tris = [(0.0, profile[0][0], 0.0)], []
+    for y, rx, rz in profile[1:-1]:
+        for i in range(segments):
+            a = 2 * math.pi * i / segments
+            verts.append((rx * math.cos(a), y, -rz * math.sin(a)))
+    verts.append((0.0, profile[-1][0], 0.0))
+    ring = lambda k, i: 1 + k * segments + i % segments
+    rings, top = len(profile) - 2, len(verts) - 1
+    for i in range(segments):
+        tris.append((0, ring(0, i + 1), ring(0, i)))
+        tris.append((top, ring(rings - 1, i), ring(rings - 1, i + 1)))
+    for k in range(rings - 1):
+        for i in range(segments):
+            tris.append((ring(k, i), ring(k, i + 1), ring(k + 1, i + 1)))
+            tris.append((ring(k, i), ring(k + 1, i + 1), ring(k + 1, i)))
+    return verts, tris
+
+
+# A tailor's dummy as (height, half width, half depth), m: hips, waist, chest, shoulders, neck, head.
+DUMMY = [(0.80, 0, 0), (0.82, 0.14, 0.10), (0.95, 0.19, 0.13), (1.10, 0.16, 0.11), (1.30, 0.19, 0.13),
+         (1.45, 0.22, 0.12), (1.52, 0.24, 0.11), (1.56, 0.20, 0.09), (1.59, 0.07, 0.065), (1.64, 0.055, 0.055),
+         (1.68, 0.08, 0.085), (1.74, 0.095, 0.10), (1.80, 0.085, 0.09), (1.85, 0.05, 0.055), (1.87, 0, 0)]
 
 
 def disc(radius, rings, hole_rings=0):
@@ -90,14 +96,11 @@ def main():
     v, t = disc(0.9, 14)
     write("round_cloth.obj", "a round tablecloth, radius 0.9 m, in the x-z plane", v, t)
 
-    v, t = disc(0.7, 14, hole_rings=2)
-    write("poncho.obj", "a poncho: a disc of radius 0.7 m with a neck hole of radius 0.1 m, in the x-z plane", v, t)
+    v, t = disc(0.77, 14, hole_rings=2)
+    write("poncho.obj", "a poncho: a disc of radius 0.77 m with a neck hole of radius 0.11 m, in the x-z plane", v, t)
 
-    v, t = [], []
-    ellipsoid(v, t, (0.0, 1.20, 0.0), (0.20, 0.36, 0.13))   # torso
-    ellipsoid(v, t, (0.0, 1.50, 0.0), (0.24, 0.07, 0.11))   # shoulders
-    ellipsoid(v, t, (0.0, 1.72, 0.0), (0.095, 0.12, 0.10))  # head
-    write("mannequin.obj", "a tailor's dummy: torso, shoulders, head (three closed ellipsoids), 1.84 m tall", v, t)
+    v, t = lathe(DUMMY)
+    write("mannequin.obj", "a tailor's dummy from 0.8 m to 1.87 m: one closed surface of revolution (elliptic sections)", v, t)
 
 
 if __name__ == "__main__":
