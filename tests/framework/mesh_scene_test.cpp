@@ -249,3 +249,37 @@ TEST(MeshScene, CatenaryHasTheArcLengthAndEndPoints) {
     Catenary tooShort{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 1, 0), 1.9};
     EXPECT_FALSE(tooShort.solve());
 }
+
+// ---- collider fields -------------------------------------------------------------------------------------
+
+TEST(MeshScene, ColliderFieldsAndErrors) {
+    writeFile("box.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");  // a closed tetrahedron
+    const auto withCollider = [](const std::string& c) {
+        return R"({"model": "cloth", "solver": {"method": "pbd"}, "colliders": [)" + c + "]}";
+    };
+    const Scene s = load(withCollider(R"({"type": "box", "center": [1, 2, 3], "half_extents": [0.5, 0.1, 0.2], "rotation": [0, 90, 0], "friction": 0.4},
+                                         {"type": "capsule", "start": [0, 0, 0], "end": [0, 3, 0], "radius": 0.05, "restitution": 0.5},
+                                         {"type": "mesh", "mesh": "box.obj", "origin": [0, 1, 0], "scale": 2})"));
+    ASSERT_EQ(s.colliders.size(), 3u);
+    EXPECT_EQ(s.colliders[0].type, Collider::Type::Box);
+    EXPECT_LT((s.colliders[0].rotation * Vec3::UnitX() - Vec3(0, 0, -1)).norm(), 1e-12) << "90 degrees about y takes +x to -z";
+    EXPECT_EQ(s.colliders[0].friction, 0.4);
+    EXPECT_EQ(s.colliders[1].type, Collider::Type::Capsule);
+    EXPECT_EQ(s.colliders[1].end, Vec3(0, 3, 0));
+    EXPECT_EQ(s.colliders[1].restitution, 0.5);
+    ASSERT_EQ(s.colliders[2].type, Collider::Type::Mesh);
+    EXPECT_LT((s.colliders[2].shape->mesh().vertices.col(3) - Vec3(0, 1, 2)).norm(), 1e-12) << "origin + scale * vertex";
+
+    const auto err = [&](const std::string& c) { return errorOf(withCollider(c)); };
+    EXPECT_NE(err(R"({"type": "box", "half_extents": [1, 0, 1]})").find("colliders[0].half_extents: every half extent must be > 0"), std::string::npos);
+    EXPECT_NE(err(R"({"type": "box", "rotation": [1, 2]})").find("colliders[0].rotation: expected an array of 3 numbers"), std::string::npos);
+    EXPECT_NE(err(R"({"type": "box", "radius": 1})").find("colliders[0].radius: unknown key"), std::string::npos);
+    EXPECT_NE(err(R"({"type": "capsule", "start": [1, 1, 1], "end": [1, 1, 1]})").find("colliders[0].end: equals start"), std::string::npos);
+    EXPECT_NE(err(R"({"type": "capsule", "radius": 0})").find("colliders[0].radius: must be > 0"), std::string::npos);
+    EXPECT_NE(err(R"({"type": "mesh"})").find("colliders[0].mesh: missing"), std::string::npos);
+    EXPECT_NE(err(R"({"type": "mesh", "mesh": "nothing.obj"})").find("colliders[0].mesh: " + (tempDir() / "nothing.obj").string() + ": no such file"),
+              std::string::npos);
+    EXPECT_NE(err(R"({"type": "mesh", "mesh": "box.obj", "scale": -1})").find("colliders[0].scale: must be > 0"), std::string::npos);
+    EXPECT_NE(err(R"({"type": "cone"})").find("colliders[0].type: unknown value \"cone\" (allowed: plane, sphere, box, capsule, mesh)"),
+              std::string::npos);
+}

@@ -250,6 +250,23 @@ const std::map<std::string, Claim>& claims() {
                                       "rim at " + num(neck) + " m");
                             settles(r, s, 0.02, v);
                         }}},
+        {"pbd_hammock", {{"3 m cloth strip hung slack from hooks 2 m apart", "corners moved onto the hooks", "sagging like the catenary"}, 6.0,
+                         [](const Scene& s, const Run& r, Verdict& v) {
+                             finiteAndPinned(r, v);
+                             v.require(s.cloth.moves.size() == 4 && std::abs(s.cloth.width - 3) < 1e-12, "a 3 m strip, four corners moved",
+                                       num(s.cloth.moves.size()) + " moved, width " + num(s.cloth.width) + " m");
+                             double lo = INFINITY, hi = -INFINITY;  // the hooks: where the pinned particles start
+                             for (int i = 0; i < r.start.size(); ++i)
+                                 if (r.start.w[i] == 0) lo = std::min(lo, r.start.x(0, i)), hi = std::max(hi, r.start.x(0, i));
+                             v.require(std::abs(hi - lo - 2) < 1e-12, "hooks 2 m apart", num(hi - lo) + " m");
+                             // sagging like the catenary: the lowest point as deep below the hooks as a 3 m catenary's between 2 m
+                             Catenary c{Vec3(lo, 2, 0), Vec3(hi, 2, 0), Vec3(0, 1, 0), 3.0};
+                             c.solve();
+                             const double sag = 2 - r.end.x.row(1).minCoeff(), want = 2 - c.at(1.0).y();
+                             v.require(std::abs(sag - want) < 0.05 * want, "it sags like the catenary (sag within 5 % of " + num(want) + " m)",
+                                       "sag " + num(sag) + " m");
+                             settles(r, s, 0.01, v);
+                         }}},
         {"mfn_hanging", {{"hung from its two top corners", "super-elasticity near the pins"}, 3.0,
                          [](const Scene& s, const Run& r, Verdict& v) {
                              finiteAndPinned(r, v);
@@ -453,6 +470,7 @@ TEST(SceneClaims, chain_catenary) { checkScene("chain_catenary"); }
 TEST(SceneClaims, pbd_tablecloth) { checkScene("pbd_tablecloth"); }
 TEST(SceneClaims, pbd_flag_pole) { checkScene("pbd_flag_pole"); }
 TEST(SceneClaims, pbd_poncho) { checkScene("pbd_poncho"); }
+TEST(SceneClaims, pbd_hammock) { checkScene("pbd_hammock"); }
 
 // The checks catch a scene that does not do what it says: the old vertical pbd_ground stands on its
 // edge, a flag without wind is not blown, a cloth that starts inside the sphere is caught inside it.

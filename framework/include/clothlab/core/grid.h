@@ -35,7 +35,7 @@ struct ClothGeometry {
 };
 
 /// The cloth of a scene at rest: the grid (makeGridState(), gridTriangles()) or, with spec.mesh, the
-/// mesh's vertices at $ ec x_i = ec o + R\,(s\,ec v_i) $ (o = origin, R = rotation,
+/// mesh's vertices at \f$ \vec x_i = \vec o + R\,(s\,\vec v_i) \f$ (o = origin, R = rotation,
 /// s = scale) with lumped masses (lumpedMasses(): a third of each adjacent triangle's area, scaled to
 /// the total mass) and its triangles. Pinned particles have w = 0.
 /// @param spec  a validated cloth (a mesh cloth has meshData)

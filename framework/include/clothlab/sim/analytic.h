@@ -26,9 +26,9 @@ struct DampedOscillator {
 /// The catenary: the shape of a hanging inextensible chain of arc length s between two anchors
 /// (Kettenlinie). In the vertical plane through both anchors, with the horizontal coordinate u from
 /// the first anchor towards the second (horizontal distance d) and the height z above the first
-/// (the second is v higher): $ z(u) = a\,(\cosh((u - u_0)/a) - \cosh(u_0/a)) $. The parameter a
-/// solves $ \sqrt{s^2 - v^2} = 2a \sinh(d / (2a)) $ (bisection on log a, the left side falls
-/// monotonically in a), and $ u_0 = d/2 - a\,\mathrm{artanh}(v/s) $.
+/// (the second is v higher): \f$ z(u) = a\,(\cosh((u - u_0)/a) - \cosh(u_0/a)) \f$. The parameter a
+/// solves \f$ \sqrt{s^2 - v^2} = 2a \sinh(d / (2a)) \f$ (bisection on log a, the left side falls
+/// monotonically in a), and \f$ u_0 = d/2 - a\,\mathrm{artanh}(v/s) \f$.
 struct Catenary {
     Vec3 start{0, 0, 0};      ///< first anchor, m
     Vec3 end{1, 0, 0};        ///< second anchor, m
