@@ -232,13 +232,7 @@ bool generateSolidConstraint(int i, const Vec3& x, const Vec3& p, const Collider
             if (s.d >= h) return false;
         }
     }
-    out->i = i;
-    out->q = s.q;
-    out->n = s.n;
-    out->start = x;
-    out->vnBefore = (p - x).dot(s.n) / dt;
-    out->friction = collider.friction;
-    out->restitution = collider.restitution;
+    *out = CollisionConstraint{i, s.q, s.n, x, (p - x).dot(s.n) / dt, collider.friction, collider.restitution};
     return true;
 }
 
