@@ -15,6 +15,7 @@
 #include "clothlab/core/topology.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/sim/analytic.h"
+#include "clothlab/sim/colliders.h"
 #include "clothlab/sim/mass_spring.h"
 #include "clothlab/sim/pbd.h"
 
