@@ -56,7 +56,7 @@ file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
   \"include_dir\": \"${_kit}/include\",
   \"system_includes\": [\"$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,\", \">\"],
   \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_graded_main>,\", \">\"],
-  \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:GTest::gtest>\"],
+  \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:tinyobjloader::tinyobjloader_double>\", \"$<TARGET_FILE:GTest::gtest>\"],
   \"link_flags\": [\"-pthread\"],
   \"client_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_remote_peer>;$<TARGET_OBJECTS:clothlab_remote_client>,\", \">\"],
   \"server_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_submission_main>;$<TARGET_OBJECTS:clothlab_remote_peer>,\", \">\"],

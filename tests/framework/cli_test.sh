@@ -60,7 +60,7 @@ expect_error newline_key  'spring.a\\x0ab: unknown key' '{"model": "spring"}' --
 expect_error grid_huge    'cloth.nx: must be between 2 and 4096 (got 100000)' '{"model": "cloth", "cloth": {"nx": 100000, "ny": 100000}}'
 expect_error grid_area    'cloth.ny: grid too large (nx\*ny > 4,000,000)' '{"model": "cloth", "cloth": {"nx": 4096, "ny": 4096}}'
 expect_error chain_huge   'chain.particles: must be between 2 and 100000 (got 18446744073709551615)' '{"model": "chain", "chain": {"particles": 18446744073709551615}}'
-expect_error pin_negative 'cloth.pins\[1\]: particle index -1 outside the grid (0..8)' '{"model": "cloth", "cloth": {"nx": 3, "ny": 3, "pins": [0, -1]}}'
+expect_error pin_negative 'cloth.pins\[1\]: particle index -1 outside the cloth (0..8)' '{"model": "cloth", "cloth": {"nx": 3, "ny": 3, "pins": [0, -1]}}'
 expect_error pin_u64      'cloth.pins\[0\]: particle index 18446744073709551615 outside' '{"model": "cloth", "cloth": {"nx": 3, "ny": 3, "pins": [18446744073709551615]}}'
 expect_error set_inf      'spring.k: expected a number (got string "inf")' '{"model": "spring"}' --set spring.k=inf
 expect_error set_overflow 'spring.k: expected a number (got string "1e999")' '{"model": "spring"}' --set spring.k=1e999

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "clothlab/core/mesh.h"
+
 namespace clothlab {
 
 State makeGridState(const ClothSpec& spec) {
@@ -15,7 +17,7 @@ State makeGridState(const ClothSpec& spec) {
     for (int r = 0; r < spec.ny; ++r)
         for (int c = 0; c < spec.nx; ++c) {
             const int i = gridIndex(c, r, spec.nx);
-            s.x.col(i) = spec.origin + Vec3(c * dx, 0, 0) + r * dy * down;
+            s.x.col(i) = spec.origin + spec.rotation * (Vec3(c * dx, 0, 0) + r * dy * down);
             s.w[i] = w;
         }
     for (int p : spec.pins) s.w[p] = 0.0;
@@ -33,6 +35,30 @@ std::vector<Eigen::Vector3i> gridTriangles(int nx, int ny) {
             t.emplace_back(a, e, b);
         }
     return t;
+}
+
+ClothGeometry makeClothGeometry(const ClothSpec& spec) {
+    ClothGeometry g;
+    if (!spec.meshData) {
+        g.state = makeGridState(spec);
+        g.triangles = gridTriangles(spec.nx, spec.ny);
+        return g;
+    }
+    const TriangleMesh& m = *spec.meshData;
+    g.state.resize(static_cast<int>(m.vertices.cols()));
+    g.state.x = (spec.rotation * (spec.scale * m.vertices)).colwise() + spec.origin;
+    TriangleMesh placed{g.state.x, m.triangles};
+    g.state.w = lumpedMasses(placed, spec.mass).cwiseInverse();
+    for (int p : spec.pins) g.state.w[p] = 0.0;
+    g.triangles = m.triangles;
+    return g;
+}
+
+void movePins(State& s, const ClothSpec& spec) {
+    for (const PinMove& m : spec.moves) {
+        s.x.col(m.index) = m.to;
+        s.v.col(m.index).setZero();
+    }
 }
 
 }  // namespace clothlab

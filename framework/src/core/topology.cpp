@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <utility>
 
 namespace clothlab {
@@ -16,6 +17,20 @@ std::vector<Eigen::Vector2i> uniqueEdges(const std::vector<Eigen::Vector3i>& tri
     std::vector<Eigen::Vector2i> out;
     out.reserve(e.size());
     for (const auto& [a, b] : e) out.emplace_back(a, b);
+    return out;
+}
+
+std::vector<Eigen::Vector2i> oppositeVertices(const std::vector<Eigen::Vector3i>& triangles) {
+    std::map<std::pair<int, int>, std::vector<int>> opposite;  // edge -> the vertex opposite it in each triangle
+    for (const auto& t : triangles)
+        for (int k = 0; k < 3; ++k) opposite[std::minmax(t[k], t[(k + 1) % 3])].push_back(t[(k + 2) % 3]);
+    std::vector<std::pair<int, int>> pairs;
+    for (const auto& [edge, o] : opposite)
+        if (o.size() == 2 && o[0] != o[1]) pairs.push_back(std::minmax(o[0], o[1]));
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    std::vector<Eigen::Vector2i> out;
+    for (const auto& [a, b] : pairs) out.emplace_back(a, b);
     return out;
 }
 

@@ -11,7 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "clothlab/core/grid.h"
 #include "clothlab/core/input_error.h"
+#include "clothlab/core/mesh.h"
+#include "clothlab/sim/colliders.h"
 #include "clothlab/sim/extensions.h"
 
 namespace clothlab {
@@ -151,25 +154,85 @@ ChainSpec readChain(Reader r) {
     c.k = r.number("k", c.k, 0);
     c.l0 = r.number("l0", c.l0, 0);
     c.kd = r.number("kd", c.kd, 0);
+    if (r.has("end")) {
+        c.end = r.vec3("end", Vec3::Zero());
+        const double span = (*c.end - c.anchor).norm(), length = (c.particles - 1) * c.l0;
+        if (!(span < length))
+            r.fail("end", "the anchors are " + std::to_string(span) + " m apart, not less than the chain's length (particles - 1) * l0 = " +
+                              std::to_string(length) + " m");
+    }
+    (void)r.get("end");
     r.finish();
     return c;
 }
 
-/// Pins: indices, or names of corners and edges of the grid.
-std::vector<int> readPins(Reader& r, const ClothSpec& c) {
+/// A file named in the scene, relative to the scene file's folder (an absolute path stays as it is).
+std::string besideScene(const std::string& sceneFile, const std::string& name) {
+    const std::filesystem::path p(name);
+    return p.is_absolute() ? name : (std::filesystem::path(sceneFile).parent_path() / p).string();
+}
+
+/// A turn given as Euler angles in degrees [a_x, a_y, a_z]: R = R_z(a_z) R_y(a_y) R_x(a_x).
+Eigen::Matrix3d readRotation(Reader& r, const std::string& key) {
+    const Vec3 a = r.vec3(key, Vec3::Zero()) * (3.14159265358979323846 / 180.0);
+    return (Eigen::AngleAxisd(a.z(), Vec3::UnitZ()) * Eigen::AngleAxisd(a.y(), Vec3::UnitY()) *
+            Eigen::AngleAxisd(a.x(), Vec3::UnitX())).toRotationMatrix();
+}
+
+/// One pin given as an object: {"index": i}, {"nearest": [x, y, z]} or {"box": {"min": .., "max": ..}},
+/// the first two optionally with "to": [x, y, z] (the particle is held there).
+/// @return the pinned particles (a move is appended to c.moves)
+std::vector<int> readPinObject(Reader e, const Matrix3X& rest, ClothSpec& c) {
+    const int n = static_cast<int>(rest.cols());
+    const int given = e.has("index") + e.has("nearest") + e.has("box");
+    if (given != 1) e.fail("", "give exactly one of index, nearest, box");
+    std::vector<int> chosen;
+    if (e.has("index")) {
+        chosen.push_back(e.integer("index", 0, 0, n - 1));
+    } else if (e.has("nearest")) {
+        const Vec3 q = e.vec3("nearest", Vec3::Zero());
+        Eigen::Index best = 0;
+        (rest.colwise() - q).colwise().squaredNorm().minCoeff(&best);
+        chosen.push_back(static_cast<int>(best));
+    } else {
+        Reader box = e.object("box");
+        const Vec3 lo = box.vec3("min", Vec3::Zero()), hi = box.vec3("max", Vec3::Zero());
+        if (!box.has("min") || !box.has("max")) box.fail("", "needs min and max, e.g. {\"min\": [0, 0, 0], \"max\": [1, 1, 1]}");
+        if (!(lo.array() <= hi.array()).all()) box.fail("max", "must be >= min in every coordinate");
+        box.finish();
+        for (int i = 0; i < n; ++i)
+            if ((rest.col(i).array() >= lo.array()).all() && (rest.col(i).array() <= hi.array()).all()) chosen.push_back(i);
+        if (chosen.empty()) e.fail("box", "no particle lies inside the box");
+        if (e.has("to")) e.fail("to", "moves one particle: use it with index or nearest, not with box");
+    }
+    if (e.has("to")) c.moves.push_back({chosen.front(), e.vec3("to", Vec3::Zero())});
+    (void)e.get("to");
+    e.finish();
+    return chosen;
+}
+
+/// Pins: indices, names of corners and edges of the grid, or objects (readPinObject()).
+std::vector<int> readPins(Reader& r, ClothSpec& c) {
     const json* v = r.get("pins");
     std::vector<int> pins;
     if (!v) return pins;
-    if (!v->is_array()) r.fail("pins", "expected an array of indices or names (got " + describe(*v) + ")");
+    if (!v->is_array()) r.fail("pins", "expected an array of indices, names or objects (got " + describe(*v) + ")");
     const int nx = c.nx, ny = c.ny;
+    const Matrix3X rest = makeClothGeometry(c).state.x;  // pins and moves refer to the cloth at rest
+    const long long count = rest.cols();
     for (size_t k = 0; k < v->size(); ++k) {
         const json& e = (*v)[k];
         const std::string key = "pins[" + std::to_string(k) + "]";
         if (e.is_number_integer()) {
             const long long i = e.get<long long>();
-            if (i < 0 || i >= static_cast<long long>(nx) * ny)
-                r.fail(key, "particle index " + e.dump() + " outside the grid (0.." + std::to_string(nx * ny - 1) + ")");
+            if (i < 0 || i >= count)
+                r.fail(key, "particle index " + e.dump() + " outside the cloth (0.." + std::to_string(count - 1) + ")");
             pins.push_back(static_cast<int>(i));
+        } else if (e.is_object()) {
+            const std::vector<int> chosen = readPinObject(Reader(e, r.field(key), r.file()), rest, c);
+            pins.insert(pins.end(), chosen.begin(), chosen.end());
+        } else if (e.is_string() && c.meshData) {
+            r.fail(key, "named pins need a grid cloth; on a mesh use an index or {\"nearest\": [x, y, z]} or {\"box\": ...}");
         } else if (e.is_string()) {
             const std::string s = e.get<std::string>();
             if (s == "top-left") pins.push_back(0);
@@ -186,8 +249,35 @@ std::vector<int> readPins(Reader& r, const ClothSpec& c) {
     return pins;
 }
 
+/// cloth.mesh, cloth.scale: a cloth made of the triangles of an OBJ file (grid fields are then errors).
+void readClothMesh(Reader& r, ClothSpec& c) {
+    c.mesh = r.text("mesh", "");
+    c.scale = r.number("scale", c.scale, 0, INFINITY, true);
+    if (c.mesh.empty()) {
+        if (r.has("scale")) r.fail("scale", "only for a mesh cloth (cloth.mesh)");
+        return;
+    }
+    for (const char* grid : {"nx", "ny", "width", "height", "orientation", "tilt", "normal"})
+        if (r.has(grid)) r.fail(grid, std::string("not used by a mesh cloth (cloth.mesh is given)") +
+                                          (std::string(grid) == "normal" ? "; turn it with cloth.rotation" : ""));
+    c.meshData = std::make_shared<const TriangleMesh>(loadObjMesh(besideScene(r.file(), c.mesh), r.file(), r.field("mesh"), true));
+}
+
+/// cloth.rotation or cloth.normal: a turn of the whole cloth about its origin.
+void readClothRotation(Reader& r, ClothSpec& c) {
+    if (r.has("rotation") && r.has("normal")) r.fail("normal", "give cloth.rotation or cloth.normal, not both");
+    c.rotation = readRotation(r, "rotation");
+    const Vec3 n = r.vec3("normal", Vec3::Zero());
+    if (!r.has("normal")) return;
+    if (n.norm() < 1e-12) r.fail("normal", "must not be the zero vector");
+    const State flat = makeGridState(c);  // the normal of the unturned grid: (down) x (across)
+    const Vec3 n0 = (flat.x.col(c.nx) - flat.x.col(0)).cross(flat.x.col(1) - flat.x.col(0)).normalized();
+    c.rotation = Eigen::Quaterniond::FromTwoVectors(n0, n.normalized()).toRotationMatrix();
+}
+
 ClothSpec readCloth(Reader r) {
     ClothSpec c;
+    readClothMesh(r, c);
     c.nx = r.integer("nx", c.nx, 2, 4096);
     c.ny = r.integer("ny", c.ny, 2, 4096);
     if (static_cast<long long>(c.nx) * c.ny > 4'000'000) r.fail("ny", "grid too large (nx*ny > 4,000,000)");
@@ -197,6 +287,7 @@ ClothSpec readCloth(Reader r) {
     c.origin = r.vec3("origin", c.origin);
     c.horizontal = r.choice("orientation", "vertical", {"vertical", "horizontal"}) == "horizontal";
     c.tilt = r.number("tilt", c.tilt, -90, 90);
+    readClothRotation(r, c);
     c.pins = readPins(r, c);
     r.finish();
     return c;
@@ -220,11 +311,38 @@ ConstraintGroup readConstraintGroup(Reader r) {
     return g;
 }
 
+/// The fields of a box, capsule or mesh collider.
+void readSolidCollider(Reader& r, const std::string& type, Collider& c) {
+    if (type == "box") {
+        c.type = Collider::Type::Box;
+        c.point = r.vec3("center", c.point);
+        c.halfExtents = r.vec3("half_extents", c.halfExtents);
+        if (!(c.halfExtents.array() > 0).all()) r.fail("half_extents", "every half extent must be > 0");
+        c.rotation = readRotation(r, "rotation");
+    } else if (type == "capsule") {
+        c.type = Collider::Type::Capsule;
+        c.point = r.vec3("start", c.point);
+        c.end = r.vec3("end", c.end);
+        if ((c.end - c.point).norm() < 1e-12) r.fail("end", "equals start (a capsule needs an axis; use a sphere)");
+        c.radius = r.number("radius", c.radius, 0, INFINITY, true);
+    } else {
+        c.type = Collider::Type::Mesh;
+        c.mesh = r.text("mesh", "");
+        if (c.mesh.empty()) r.fail("mesh", "missing (an OBJ file, relative to the scene file)");
+        TriangleMesh m = loadObjMesh(besideScene(r.file(), c.mesh), r.file(), r.field("mesh"), false);
+        const double scale = r.number("scale", 1.0, 0, INFINITY, true);
+        m.vertices = (readRotation(r, "rotation") * (scale * m.vertices)).colwise() + r.vec3("origin", Vec3::Zero());
+        c.shape = std::make_shared<const MeshShape>(std::move(m));
+    }
+}
+
 Collider readCollider(Reader r) {
     Collider c;
-    const std::string type = r.choice("type", "", {"plane", "sphere"});
-    if (type.empty()) r.fail("type", "missing (plane or sphere)");
-    if (type == "plane") {
+    const std::string type = r.choice("type", "", {"plane", "sphere", "box", "capsule", "mesh"});
+    if (type.empty()) r.fail("type", "missing (plane, sphere, box, capsule or mesh)");
+    if (type == "box" || type == "capsule" || type == "mesh") {
+        readSolidCollider(r, type, c);
+    } else if (type == "plane") {
         c.type = Collider::Type::Plane;
         c.point = r.vec3("point", c.point);
         c.normal = r.vec3("normal", c.normal);

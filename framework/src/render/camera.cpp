@@ -79,6 +79,11 @@ void drawBounds(const DrawData& d, Vec3& lo, Vec3& hi) {
             lo = lo.cwiseMin(c.point - Vec3::Constant(c.radius));
             hi = hi.cwiseMax(c.point + Vec3::Constant(c.radius));
         }
+    for (const Matrix3X& corners : d.collider_triangles)
+        if (corners.cols() > 0) {
+            lo = lo.cwiseMin(corners.rowwise().minCoeff());
+            hi = hi.cwiseMax(corners.rowwise().maxCoeff());
+        }
     if (lo.x() > hi.x()) lo = hi = Vec3::Zero();
 }
 

@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "clothlab/core/grid.h"
+#include "clothlab/core/topology.h"
+#include "clothlab/sim/colliders.h"
 #include "clothlab/sim/mass_spring.h"
 #include "clothlab/sim/simulation.h"
 
@@ -49,13 +51,21 @@ void setEdges(DrawData& d, const std::vector<Eigen::Vector2i>& edges, const Scen
     d.rest_length.clear();
     for (const auto& e : edges) {
         if (s.model == Model::Cloth) {
-            d.edge_kind.push_back(gridKind(e[0], e[1], s.cloth.nx));
+            d.edge_kind.push_back(s.cloth.meshData ? EdgeKind::Structural : gridKind(e[0], e[1], s.cloth.nx));
             d.rest_length.push_back((rest.x.col(e[0]) - rest.x.col(e[1])).norm());
         } else {
             d.edge_kind.push_back(EdgeKind::Single);
             d.rest_length.push_back(s.model == Model::Chain ? s.chain.l0 : s.spring.l0);
         }
     }
+}
+
+// The scene's colliders, and the solid ones (box, capsule, mesh) as triangles.
+void setColliders(DrawData& d, const Scene& s) {
+    d.colliders = s.colliders;
+    d.collider_triangles.clear();
+    for (const Collider& c : s.colliders)
+        if (c.type != Collider::Type::Plane && c.type != Collider::Type::Sphere) d.collider_triangles.push_back(colliderTriangles(c));
 }
 
 void setUv(DrawData& d, const ClothSpec& c) {
@@ -89,13 +99,13 @@ DrawData makeDrawData(const Simulation& sim) {
     d.w = sim.state().w;
     d.t = sim.state().t;
     d.triangles = sim.triangles();
-    d.colliders = s.colliders;
+    setColliders(d, s);
     d.title = titleOf(s);
     State rest;
     if (s.model == Model::Cloth) {
-        rest = makeGridState(s.cloth);
-        if (rest.size() == sim.state().size()) setUv(d, s.cloth);
-        else rest = sim.state();
+        rest = makeClothGeometry(s.cloth).state;
+        if (rest.size() != sim.state().size()) rest = sim.state();
+        else if (!s.cloth.meshData) setUv(d, s.cloth);
     }
     setEdges(d, sim.edges(), s, rest);
     if (const auto exact = singleSpringAnalytic(s))
@@ -119,9 +129,17 @@ DrawData makeClothDrawData(const ClothSpec& spec, const State& state, const Stat
 
 DrawData makeDrawData(const Scene& s) {
     DrawData d;
-    if (s.model == Model::Cloth) {
-        const State st = makeGridState(s.cloth);
-        d = makeClothDrawData(s.cloth, st, st);
+    if (s.model == Model::Cloth && s.cloth.meshData) {
+        ClothGeometry g = makeClothGeometry(s.cloth);
+        movePins(g.state, s.cloth);
+        d.x = g.state.x;
+        d.w = g.state.w;
+        d.triangles = g.triangles;
+        setEdges(d, uniqueEdges(g.triangles), s, g.state);
+    } else if (s.model == Model::Cloth) {
+        State st = makeGridState(s.cloth);
+        movePins(st, s.cloth);
+        d = makeClothDrawData(s.cloth, st, makeGridState(s.cloth));
     } else {
         const MassSpringModel m = s.model == Model::Chain ? makeChain(s.chain) : makeSingleSpring(s.spring);
         d.x = m.state.x;
@@ -130,7 +148,7 @@ DrawData makeDrawData(const Scene& s) {
         for (const Spring& sp : m.springs) e.emplace_back(sp.i, sp.j);
         setEdges(d, e, s, m.state);
     }
-    d.colliders = s.colliders;
+    setColliders(d, s);
     d.title = titleOf(s);
     return d;
 }

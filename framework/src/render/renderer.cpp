@@ -41,6 +41,17 @@ void drawSphere(const Vec3& c, double r, int slices = 32, int stacks = 16) {
 }
 
 // An orthonormal pair spanning the plane with normal n.
+// Flat-shaded triangles, 3 x 3K corners (a box, capsule or mesh collider from DrawData::collider_triangles).
+void drawFlatTriangles(const Matrix3X& corners) {
+    glBegin(GL_TRIANGLES);
+    for (Eigen::Index k = 0; k + 2 < corners.cols(); k += 3) {
+        const Vec3 n = (corners.col(k + 1) - corners.col(k)).cross(corners.col(k + 2) - corners.col(k)).normalized();
+        glNormal3d(n.x(), n.y(), n.z());
+        for (int j = 0; j < 3; ++j) glVertex3d(corners(0, k + j), corners(1, k + j), corners(2, k + j));
+    }
+    glEnd();
+}
+
 void planeAxes(const Vec3& n, Vec3& a, Vec3& b) {
     a = (std::abs(n.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)).cross(n).normalized();
     b = n.cross(a);
@@ -210,6 +221,8 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
                 drawSphere(c.point, std::max(c.radius - 0.5e-3 * scale, 0.0), 48, 24);
             }
         }
+        setMaterial(GL_FRONT_AND_BACK, {0.62f, 0.56f, 0.50f}, 0.2f, 30);
+        for (const Matrix3X& corners : d.collider_triangles) drawFlatTriangles(corners);
         glDisable(GL_LIGHTING);
     }
 

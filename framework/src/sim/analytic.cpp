@@ -1,5 +1,6 @@
 #include "clothlab/sim/analytic.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace clothlab {
@@ -32,5 +33,51 @@ double DampedOscillator::velocity(double t) const {
 }
 
 double DampedOscillator::period() const { return 2.0 * M_PI * std::sqrt(m / k); }
+
+namespace {
+// The horizontal axis of the catenary's plane: the horizontal part of end − start.
+Vec3 horizontalOf(const Catenary& c) {
+    const Vec3 r = c.end - c.start;
+    return r - r.dot(c.up) * c.up;
+}
+}  // namespace
+
+bool Catenary::solve() {
+    const double d = horizontalOf(*this).norm(), v = (end - start).dot(up);
+    const double target = std::sqrt(std::max(0.0, length * length - v * v));
+    if (!(d > 1e-12) || !(length > (end - start).norm())) return false;
+    // f(a) = 2 a sinh(d / (2a)) falls from infinity (a -> 0) to d (a -> infinity): bisection on log a.
+    double lo = std::log(d) - 10.0, hi = std::log(d) + 20.0;
+    const auto f = [&](double loga) {
+        const double aa = std::exp(loga), x = d / (2 * aa);
+        return x > 700 ? INFINITY : 2 * aa * std::sinh(x);
+    };
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (f(mid) > target ? lo : hi) = mid;
+    }
+    a = std::exp(0.5 * (lo + hi));
+    u0 = d / 2 - a * std::atanh(v / length);
+    return true;
+}
+
+Vec3 Catenary::at(double u) const {
+    const Vec3 h = horizontalOf(*this).normalized();
+    return start + u * h + a * (std::cosh((u - u0) / a) - std::cosh(u0 / a)) * up;
+}
+
+double Catenary::distance(const Vec3& x) const {
+    const double d = horizontalOf(*this).norm();
+    const int n = 4000;
+    double best = INFINITY;
+    Vec3 prev = at(0.0);
+    for (int k = 1; k <= n; ++k) {
+        const Vec3 next = at(d * k / n), seg = next - prev;
+        const double t = std::clamp((x - prev).dot(seg) / seg.squaredNorm(), 0.0, 1.0);
+        best = std::min(best, (x - prev - t * seg).norm());
+        prev = next;
+    }
+    return best;
+}
 
 }  // namespace clothlab

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "clothlab/core/grid.h"
+#include "clothlab/core/topology.h"
 #include "clothlab/exercise/02_mfn.h"
 #include "clothlab/sim/energy.h"
 #include "clothlab/sim/provot.h"
@@ -26,9 +27,21 @@ MassSpringModel makeSingleSpring(const SingleSpringSpec& s) {
 MassSpringModel makeChain(const ChainSpec& c) {
     MassSpringModel m;
     m.state.resize(c.particles);
+    Vec3 apex = c.anchor;  // with an end: the V's lowest point
+    const double half = 0.5 * (c.particles - 1) * c.l0;
+    if (c.end) {
+        const Vec3 span = *c.end - c.anchor, u = span.normalized();
+        const auto across = [&](const Vec3& dir) { return Vec3(dir - dir.dot(u) * u); };  // dir without its part along u
+        Vec3 down = across(Vec3(0, -1, 0));
+        if (down.norm() < 1e-9) down = across(Vec3(-1, 0, 0));
+        apex = c.anchor + 0.5 * span + down.normalized() * std::sqrt(std::max(0.0, half * half - 0.25 * span.squaredNorm()));
+    }
     for (int i = 0; i < c.particles; ++i) {
-        m.state.x.col(i) = c.anchor + i * c.l0 * c.direction;
-        m.state.w[i] = i == 0 ? 0.0 : 1.0 / c.mass;
+        const double s = i * c.l0;
+        m.state.x.col(i) = !c.end ? Vec3(c.anchor + s * c.direction)
+                           : s <= half ? Vec3(c.anchor + s / half * (apex - c.anchor))
+                                       : Vec3(apex + (s - half) / half * (*c.end - apex));
+        m.state.w[i] = i == 0 || (c.end && i == c.particles - 1) ? 0.0 : 1.0 / c.mass;
         if (i > 0) m.springs.push_back({i - 1, i, c.k, c.l0, c.kd, SpringType::Single});
     }
     return m;
@@ -36,9 +49,23 @@ MassSpringModel makeChain(const ChainSpec& c) {
 
 MassSpringModel makeCloth(const Scene& scene) {
     MassSpringModel m;
-    m.state = makeGridState(scene.cloth);
-    m.springs = makeClothSprings(m.state.x, scene.cloth.nx, scene.cloth.ny, scene.springs);
+    ClothGeometry cloth = makeClothGeometry(scene.cloth);
+    m.state = std::move(cloth.state);
+    m.springs = scene.cloth.meshData ? makeMeshSprings(m.state.x, cloth.triangles, scene.springs)
+                                     : makeClothSprings(m.state.x, scene.cloth.nx, scene.cloth.ny, scene.springs);
     return m;
+}
+
+std::vector<Spring> makeMeshSprings(const Matrix3X& x, const std::vector<Eigen::Vector3i>& triangles, const ClothSprings& types) {
+    std::vector<Spring> springs;
+    const auto add = [&](int i, int j, const SpringGroup& g, SpringType type) {
+        springs.push_back({i, j, g.k, (x.col(i) - x.col(j)).norm(), g.kd, type});
+    };
+    if (types.structural.enabled)
+        for (const auto& e : uniqueEdges(triangles)) add(e[0], e[1], types.structural, SpringType::Structural);
+    if (types.bending.enabled)
+        for (const auto& e : oppositeVertices(triangles)) add(e[0], e[1], types.bending, SpringType::Bending);
+    return springs;
 }
 
 std::optional<DampedOscillator> singleSpringAnalytic(const Scene& scene) {
@@ -84,7 +111,7 @@ MassSpringSimulation::MassSpringSimulation(const Scene& scene, MassSpringModel m
             });
     } else {
         // Stage 02: a chain or a cloth is a mass-spring network.
-        if (scene.model == Model::Cloth) triangles_ = gridTriangles(scene.cloth.nx, scene.cloth.ny);
+        if (scene.model == Model::Cloth) triangles_ = makeClothGeometry(scene.cloth).triangles;
         if (gravity || air)
             addForce(externalName, [this, g = f.gravity, c = f.air_damping](const Matrix3X&, const Matrix3X& v, Matrix3X& out) {
                 addClothExternalForces(state_.w, v, g, c, out);  // exercise 2.3
@@ -105,11 +132,16 @@ MassSpringSimulation::MassSpringSimulation(const Scene& scene, MassSpringModel m
     integrate_pass_ = timer_.add(std::string("integrate: ") + methodName(scene.solver.method));
     if (scene.provot.enabled && !springs_.empty()) provot_pass_ = timer_.add("provot: strain limit");
     analytic_ = singleSpringAnalytic(scene);
+    if (scene.model == Model::Chain && scene.chain.end && scene.forces.gravity.norm() > 0) {
+        Catenary c{scene.chain.anchor, *scene.chain.end, -scene.forces.gravity.normalized(), (scene.chain.particles - 1) * scene.chain.l0};
+        if (c.solve()) catenary_ = c;
+    }
     if (analytic_) {
         anchor_ = scene.spring.anchor;
         axis_ = (scene.spring.start - scene.spring.anchor).normalized();
     }
     initMeasures();
+    if (scene.model == Model::Cloth) movePins(state_, scene.cloth);  // pins given a position ("to") go there
 }
 
 void MassSpringSimulation::addForce(const std::string& name, ForceTerm term) {
@@ -155,7 +187,15 @@ double MassSpringSimulation::analyticError() const {
     return (state_.x.col(1) - exact).norm();
 }
 
+double MassSpringSimulation::catenaryError() const {
+    if (!catenary_) return -1.0;
+    double worst = 0.0;
+    for (int i = 0; i < state_.size(); ++i) worst = std::max(worst, catenary_->distance(state_.x.col(i)));
+    return worst / (catenary_->end - catenary_->start).norm();
+}
+
 void MassSpringSimulation::addMetrics(std::vector<Metric>& m) const {
+    if (catenary_) m.push_back({"catenary_error", catenaryError(), "1"});
     if (!analytic_) return;
     m.push_back({"error", analyticError(), "m"});
     m.push_back({"max_error", max_error_, "m"});

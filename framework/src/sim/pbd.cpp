@@ -15,10 +15,10 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
     const SolverSpec& sv = scene.solver;
     xpbd_ = sv.method == Method::Xpbd;
     subDt_ = sv.dt / sv.substeps;
-    // Lines (1)-(3): x_i, v_i, w_i of every particle.
-    static_cast<State&>(P_) = makeGridState(scene.cloth);
-    P_.p = P_.x;
-    triangles_ = gridTriangles(scene.cloth.nx, scene.cloth.ny);
+    // Lines (1)-(3): x_i, v_i, w_i of every particle (a grid or a mesh, at rest).
+    ClothGeometry cloth = makeClothGeometry(scene.cloth);
+    static_cast<State&>(P_) = std::move(cloth.state);
+    triangles_ = std::move(cloth.triangles);
     edges_ = uniqueEdges(triangles_);
 
     // Only what the scene uses becomes a pass and a callback.
@@ -76,6 +76,8 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
     if (distancePass_ >= 0 || bendingPass_ >= 0 || collisionPass_ >= 0 || selfPass_ >= 0)
         callbacks_.projectConstraints = [this](Matrix3X& p) { projectConstraints(p); };
     initMeasures();
+    movePins(P_, scene.cloth);  // pins given a position ("to") go there; the rest shape above stays
+    P_.p = P_.x;
 }
 
 // Line (4) calls this once per frame; line (17) is its end.
@@ -123,9 +125,10 @@ void PbdSimulation::generateCollisions(const Matrix3X& x, const Matrix3X& p) {
     for (int i = 0; i < x.cols(); ++i) {
         if (P_.w[i] <= 0.0) continue;
         for (const Collider& col : scene_.colliders) {
-            const bool hit = col.type == Collider::Type::Plane
-                                 ? generatePlaneConstraint(i, x.col(i), p.col(i), col, h, subDt_, &c)    // exercise 6.1
-                                 : generateSphereConstraint(i, x.col(i), p.col(i), col, h, subDt_, &c);  // exercise 6.2
+            const Vec3 xi = x.col(i), pi = p.col(i);
+            const bool hit = col.type == Collider::Type::Plane    ? generatePlaneConstraint(i, xi, pi, col, h, subDt_, &c)   // exercise 6.1
+                             : col.type == Collider::Type::Sphere ? generateSphereConstraint(i, xi, pi, col, h, subDt_, &c)  // exercise 6.2
+                                                                  : generateSolidConstraint(i, xi, pi, col, h, subDt_, &c);  // sim/colliders.h
             if (hit) contacts_.push_back(c);
         }
     }

@@ -4,6 +4,7 @@
 /// A scene names only what it uses; the simulation built from it runs only those parts.
 /// Scenes are JSON files (see io/scene_json.h and docs/scenes.md); every field has a default.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,9 @@
 #include "clothlab/core/types.h"
 
 namespace clothlab {
+
+struct TriangleMesh;
+class MeshShape;
 
 /// What is simulated (scene field `model`).
 enum class Model {
@@ -52,7 +56,7 @@ struct SingleSpringSpec {
     double kd = 0.0;            ///< damping along the spring, N s/m
 };
 
-/// "chain": n particles joined by n-1 springs, the first one pinned.
+/// "chain": n particles joined by n-1 springs, the first one pinned (and the last one too when `end` is given).
 struct ChainSpec {
     int particles = 10;         ///< number of particles n (≥ 2)
     Vec3 anchor{0, 0, 0};       ///< position of particle 0 (pinned), m
@@ -61,10 +65,21 @@ struct ChainSpec {
     double k = 1000.0;          ///< stiffness of each link, N/m
     double l0 = 0.1;            ///< rest length of each link, m
     double kd = 0.0;            ///< damping along each link, N s/m
+    /// Second anchor (scene field `chain.end`): the last particle is pinned there and the chain starts as a
+    /// symmetric V below the two anchors (links at rest length, in the vertical plane through both), so it
+    /// hangs slack between them; needs (n-1) l0 > |end − anchor|. `direction` is then unused.
+    std::optional<Vec3> end;
 };
 
-/// "cloth": nx x ny particles on a regular grid. Particle (c, r) has index r*nx + c;
-/// row 0 is the top edge, column 0 the left edge.
+/// A pinned particle moved to a given position when the simulation starts (scene field `cloth.pins`
+/// entry with `"to"`): the cloth keeps its rest shape (rest lengths, bending angles) and is held there.
+struct PinMove {
+    int index = 0;      ///< particle index
+    Vec3 to{0, 0, 0};   ///< where it is held, m
+};
+
+/// "cloth": nx x ny particles on a regular grid, or the vertices of a triangle mesh (`mesh`).
+/// Grid particle (c, r) has index r*nx + c; row 0 is the top edge, column 0 the left edge.
 struct ClothSpec {
     int nx = 10;                     ///< particles along the width (≥ 2)
     int ny = 10;                     ///< particles along the height (≥ 2)
@@ -76,7 +91,17 @@ struct ClothSpec {
     /// Turn about the top edge (the x axis through `origin`), degrees in [-90, 90]: a vertical cloth
     /// swings its bottom edge towards +z, a horizontal one lowers its far edge (0: not tilted)
     double tilt = 0.0;
+    /// Turn of the whole cloth about `origin`, applied after orientation and tilt (scene fields
+    /// `cloth.rotation`, Euler angles in degrees, R = R_z R_y R_x, or `cloth.normal`, the shortest turn of
+    /// the vertical cloth's normal +z onto it); identity: not turned
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
     std::vector<int> pins;           ///< indices of pinned particles (w = 0)
+    std::vector<PinMove> moves;      ///< pinned particles moved away from their rest position
+    /// Mesh cloth (scene field `cloth.mesh`, an OBJ path relative to the scene file): particles at
+    /// origin + rotation (scale · vertex), lumped masses (lumpedMasses()); nx, ny, width, height unused
+    std::string mesh;
+    double scale = 1.0;                              ///< mesh cloth: factor on the OBJ coordinates
+    std::shared_ptr<const TriangleMesh> meshData;    ///< mesh cloth: the loaded, checked mesh
 };
 
 /// One spring type of the mass-spring network.
@@ -112,17 +137,25 @@ struct ClothConstraints {
     ConstraintGroup bending;   ///< dihedral angle across interior edges
 };
 
-/// A static collider.
+/// A static collider. Its surface, signed distance and collision constraints: sim/colliders.h.
 struct Collider {
     /// Kind of collider.
     enum class Type {
-        Plane,  ///< infinite plane through `point` with outward `normal`
-        Sphere  ///< sphere around `point` with `radius`
+        Plane,    ///< infinite plane through `point` with outward `normal`
+        Sphere,   ///< sphere around `point` with `radius`
+        Box,      ///< oriented box: centre `point`, half extents `halfExtents` along the columns of `rotation`
+        Capsule,  ///< capsule (a pole with round ends): the points within `radius` of the segment `point`–`end`
+        Mesh      ///< static closed triangle mesh (`mesh`), outside = where its face normals point
     };
     Type type = Type::Plane;   ///< kind of collider
-    Vec3 point{0, 0, 0};       ///< plane: a point on it; sphere: the centre, m
+    Vec3 point{0, 0, 0};       ///< plane: a point on it; sphere, box: the centre; capsule: one end of the axis, m
     Vec3 normal{0, 1, 0};      ///< plane: outward unit normal (normalised on load)
-    double radius = 0.5;       ///< sphere radius, m
+    double radius = 0.5;       ///< sphere and capsule radius, m
+    Vec3 end{0, 1, 0};         ///< capsule: the other end of the axis, m
+    Vec3 halfExtents{0.5, 0.5, 0.5};  ///< box: half its size along its axes, m
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< box: its axes as columns (Euler angles on load)
+    std::string mesh;          ///< mesh: the OBJ file (resolved against the scene file's folder)
+    std::shared_ptr<const MeshShape> shape;  ///< mesh: the loaded mesh with its bounding-volume hierarchy
     double friction = 0.0;     ///< Coulomb friction coefficient μ ≥ 0
     double restitution = 0.0;  ///< coefficient of restitution e in [0, 1]
 };

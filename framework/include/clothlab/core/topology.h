@@ -14,6 +14,13 @@ namespace clothlab {
 /// @return           edges as index pairs
 std::vector<Eigen::Vector2i> uniqueEdges(const std::vector<Eigen::Vector3i>& triangles);
 
+/// For every interior edge (shared by exactly two triangles) the two vertices opposite it, once each,
+/// sorted: the ends of a bending spring across the edge (on a grid: particles one diagonal or, across a
+/// cell's split, two apart). Works on any triangle mesh.
+/// @param triangles  triangles as particle index triples
+/// @return           pairs (smaller index, larger index)
+std::vector<Eigen::Vector2i> oppositeVertices(const std::vector<Eigen::Vector3i>& triangles);
+
 }  // namespace clothlab
 
 namespace clothlab {

@@ -40,7 +40,7 @@ struct Camera {
     void zoom(double factor);
 };
 
-/// Axis-aligned bounding box of the particles, plus spheres and (small) plane patches of the colliders.
+/// Axis-aligned bounding box of the particles, plus spheres, boxes, capsules, meshes and (small) plane patches of the colliders.
 /// @param d    what is drawn
 /// @param lo   smallest corner (output), m
 /// @param hi   largest corner (output), m

@@ -37,7 +37,9 @@ struct DrawData {
     std::vector<double> rest_length;         ///< rest length l0 of each edge, m (for the strain colouring)
     std::vector<Eigen::Vector3i> triangles;  ///< cloth surface, counter-clockwise index triples (may be empty)
     Eigen::Matrix2Xd uv;                     ///< texture coordinates per particle in [0, 1]² (cloth only; else empty)
-    std::vector<Collider> colliders;         ///< planes and spheres
+    std::vector<Collider> colliders;         ///< the scene's colliders
+    /// Boxes, capsules and meshes as flat triangles (colliderTriangles()), one 3 x 3K matrix per collider, m
+    std::vector<Matrix3X> collider_triangles;
     std::vector<Vec3> ghosts;                ///< where an analytic solution puts the particles (drawn translucent), m
     double t = 0.0;                          ///< simulated time, s (shown in the corner)
     std::string title;                       ///< one line shown in the corner (scene and method)

@@ -23,12 +23,24 @@ struct MassSpringModel {
 MassSpringModel makeSingleSpring(const SingleSpringSpec& spec);
 
 /// A chain of n particles along `direction`, links of rest length l0, particle 0 pinned
-/// (a one-dimensional mass-spring network: it runs on stage 02's force functions).
+/// (a one-dimensional mass-spring network: it runs on stage 02's force functions). With `end`, the
+/// last particle is pinned there too and the chain starts as a V below the anchors: particle i at arc
+/// length i l0 along anchor → apex → end, the apex on the anchors' perpendicular bisector, straight
+/// below their midpoint (−y, or −x if the anchors are above each other), (n−1) l0 / 2 from each anchor.
 MassSpringModel makeChain(const ChainSpec& spec);
 
-/// A cloth (stage 02): particles from makeGridState(), springs from makeClothSprings()
-/// (structural, shear and bending as the scene's `springs` enable them).
+/// A cloth (stage 02): particles from makeClothGeometry(); a grid's springs from makeClothSprings()
+/// (structural, shear and bending as the scene's `springs` enable them), a mesh's from makeMeshSprings().
 MassSpringModel makeCloth(const Scene& scene);
+
+/// The springs of a mesh cloth: a structural spring along every edge (uniqueEdges()) and a bending
+/// spring between the two vertices opposite every interior edge (oppositeVertices()); a mesh has no
+/// separate shear springs. Rest lengths from x; k and kd from the enabled groups of `types`.
+/// @param x          particle positions at rest, 3 x N, m
+/// @param triangles  the mesh
+/// @param types      springs.structural and springs.bending (springs.shear is not used)
+/// @return           the springs
+std::vector<Spring> makeMeshSprings(const Matrix3X& x, const std::vector<Eigen::Vector3i>& triangles, const ClothSprings& types);
 
 /// The 1-D analytic solution of the single-spring scene, when the motion stays on the
 /// spring's line (start − anchor, initial velocity and gravity all parallel).
@@ -60,10 +72,15 @@ public:
     const std::vector<Spring>& springs() const { return springs_; }
     /// Distance between the hanging particle and the analytic solution, m (0 without one).
     double analyticError() const;
+    /// A chain between two anchors: the largest distance of a particle from the catenary with the
+    /// same end points and arc length (Catenary), as a fraction of the span |end − anchor| (1);
+    /// −1 for any other scene.
+    double catenaryError() const;
 
 protected:
     double elasticEnergy() const override;
-    /// error and max_error against the analytic solution, when the scene has one.
+    /// error and max_error against the analytic solution, when the scene has one; catenary_error for a
+    /// chain between two anchors.
     void addMetrics(std::vector<Metric>& m) const override;
 
 private:
@@ -81,6 +98,7 @@ private:
     Rk4Workspace rk4_;                     ///< buffers of rk4Step()
     ImplicitEulerSolver implicit_;         ///< the implicit Euler stepper
     std::optional<DampedOscillator> analytic_;  ///< exact solution, when there is one
+    std::optional<Catenary> catenary_;     ///< a chain between two anchors: its catenary
     Vec3 anchor_{0, 0, 0};                 ///< fixed end of the 1-D solution's line, m
     Vec3 axis_{0, -1, 0};                  ///< unit direction of that line
     double max_error_ = 0.0;               ///< largest error against the analytic solution after any step, m

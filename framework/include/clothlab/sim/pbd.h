@@ -5,12 +5,12 @@
 ///
 /// | line | algorithm | file: function |
 /// |---|---|---|
-/// | (1)–(3) | forall vertices: initialise x_i, v_i, w_i = 1/m_i | sim/pbd.cpp: PbdSimulation::PbdSimulation(), with core/grid.h: makeGridState() |
+/// | (1)–(3) | forall vertices: initialise x_i, v_i, w_i = 1/m_i | sim/pbd.cpp: PbdSimulation::PbdSimulation(), with core/grid.h: makeClothGeometry() (a grid or a mesh) |
 /// | (4) | loop | sim/run.cpp: runSimulation() (or the app), calling sim/pbd.cpp: PbdSimulation::step() once per frame |
 /// | (5) | v_i ← v_i + Δt w_i f_ext(x_i) | exercises/03_pbd_loop/pbd_loop.cpp: pbdStep() (exercise 3.3), f_ext from sim/pbd.cpp: PbdSimulation::addExternalForces() |
 /// | (6) | dampVelocities(v_1, ..., v_N) | exercises/03_pbd_loop/pbd_loop.cpp: dampVelocities() (exercise 3.1) |
 /// | (7) | p_i ← x_i + Δt v_i | exercises/03_pbd_loop/pbd_loop.cpp: pbdStep() |
-/// | (8) | generateCollisionConstraints(x_i → p_i) | sim/pbd.cpp: PbdSimulation::generateCollisions(), calling exercises/06_collision/collision.cpp (exercises 6.1, 6.2); with self-collision PbdSimulation::findSelfCollisions(), calling exercises/07_self_collision/self_collision.cpp (exercises 7.1–7.4) |
+/// | (8) | generateCollisionConstraints(x_i → p_i) | sim/pbd.cpp: PbdSimulation::generateCollisions(), calling exercises/06_collision/collision.cpp (exercises 6.1, 6.2: planes, spheres) and sim/colliders.h: generateSolidConstraint() (boxes, capsules, meshes); with self-collision PbdSimulation::findSelfCollisions(), calling exercises/07_self_collision/self_collision.cpp (exercises 7.1–7.4) |
 /// | (9)–(11) | loop solverIterations times: projectConstraints(C_1, ..., C_M+Mcoll, p_1, ..., p_N) | pbdStep() calling sim/pbd.cpp: PbdSimulation::projectConstraints(), which runs the sweeps of sim/sweeps.cpp over exercises 4.3, 5.2, 6.3, 7.5–7.6 (stiffness per iteration: exercise 3.2) |
 /// | (12)–(15) | v_i ← (p_i − x_i)/Δt, x_i ← p_i | exercises/03_pbd_loop/pbd_loop.cpp: pbdStep() |
 /// | (16) | velocityUpdate(v_1, ..., v_N) | exercises/06_collision/collision.cpp: velocityUpdate() (exercise 6.4) |
