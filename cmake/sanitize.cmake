@@ -51,6 +51,10 @@ function(clothlab_add_sanitize_tests)
     clothlab_link_extensions(clothlab-sanitized)
     foreach(_t clothlab-sanitized scene_fuzz_replay)
       target_compile_options(${_t} PRIVATE ${CLOTHLAB_SANITIZER_FLAGS})
+      # Eigen frees with its own aligned allocator when it sees __SANITIZE_ADDRESS__ and with plain free
+      # otherwise: matrices cross between these objects and the normal build's, so both use glibc's
+      # (16-byte aligned) malloc and free.
+      target_compile_definitions(${_t} PRIVATE EIGEN_MALLOC_ALREADY_ALIGNED=1)
       target_compile_definitions(${_t} PRIVATE CLOTHLAB_REFERENCE_AVAILABLE=$<BOOL:${CLOTHLAB_REFERENCE_AVAILABLE}>)
       target_link_options(${_t} PRIVATE -fsanitize=address,undefined)
       target_link_libraries(${_t} PRIVATE clothlab_framework)  # the loader's own objects come first

@@ -24,6 +24,17 @@ const char* methodName(Method m) {
     return "?";
 }
 
+const char* colliderTypeName(Collider::Type t) {
+    switch (t) {
+        case Collider::Type::Plane: return "plane";
+        case Collider::Type::Sphere: return "sphere";
+        case Collider::Type::Box: return "box";
+        case Collider::Type::Capsule: return "capsule";
+        case Collider::Type::Mesh: return "mesh";
+    }
+    return "?";
+}
+
 const std::vector<Method>& allMethods() {
     static const std::vector<Method> all = {Method::ExplicitEuler, Method::SymplecticEuler, Method::VelocityVerlet,
                                             Method::Rk4,           Method::ImplicitEuler,   Method::Pbd,

@@ -488,8 +488,7 @@ void App::panelParameters() {
     changed |= ImGui::IsItemDeactivatedAfterEdit();
     for (size_t i = 0; i < all_colliders_.size(); ++i) {
         const Collider& c = all_colliders_[i];
-        static const char* const kinds[] = {"plane ", "sphere ", "box ", "capsule ", "mesh "};
-        const std::string label = kinds[static_cast<int>(c.type)] + std::to_string(i);
+        const std::string label = std::string(colliderTypeName(c.type)) + " " + std::to_string(i);
         bool on = collider_on_[i];
         if (ImGui::Checkbox(label.c_str(), &on)) collider_on_[i] = on, changed = true;
         if (i + 1 < all_colliders_.size()) ImGui::SameLine();

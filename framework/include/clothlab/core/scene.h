@@ -160,6 +160,9 @@ struct Collider {
     double restitution = 0.0;  ///< coefficient of restitution e in [0, 1]
 };
 
+/// The scene-file name of a collider type, e.g. "capsule".
+const char* colliderTypeName(Collider::Type t);
+
 /// Self-collision of the cloth with itself (stage 07; scene field `self_collision`).
 struct SelfCollisionSpec {
     bool enabled = false;       ///< whether particles of the cloth are kept apart from each other

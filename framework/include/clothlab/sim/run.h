@@ -53,7 +53,8 @@ constexpr double kPenetrationFactor = 3.0;
 constexpr double kFellThroughFactor = 4.0;
 /// The smallest fell-through depth D (for h = 0), m.
 constexpr double kFellThroughMinDepth = 1e-3;
-/// EnergyGrowth bound, in units of energyScale(); scenes with wind (energy input) are not checked.
+/// EnergyGrowth bound, in units of energyScale(); scenes with wind (energy input) or pins moved
+/// away from the rest shape (`"to"`: stored energy the constraints release) are not checked.
 constexpr double kEnergyGrowthBound = 0.1;
 
 /// One warning of a run: what, where it started, how bad.
