@@ -1,6 +1,7 @@
 // Two cores (solver.threads): the colour groups the PBD sweeps run in parallel share no particle
 // (checked by brute force), and a run on two threads gives the same state bit for bit as the serial
 // run (threads = 1), for PBD and XPBD with distance, bending and collision constraints.
+#include <cmath>
 #include <cstring>
 #include <set>
 
@@ -8,6 +9,7 @@
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/io/scene_json.h"
+#include "clothlab/sim/mass_spring.h"
 #include "clothlab/sim/pbd.h"
 
 using namespace clothlab;
@@ -107,4 +109,52 @@ TEST(Parallel, ThreadsIsValidated) {
     EXPECT_EQ(scene("pbd_sphere", {}).solver.threads, 0);
     EXPECT_GE(sweepThreads(0), 1);
     EXPECT_EQ(sweepThreads(3), 3);
+}
+
+// ---- Implicit Euler on large systems: conjugate gradients on the spring blocks ------------------
+namespace {
+// A 32 x 32 cloth (3000 unknowns: the block solver's size) hanging from its top edge, Δt = 0.01 s:
+// a large step for these springs (Δt²k/m ≈ 10 for the structural ones).
+Scene implicitCloth(double dt, int threads) {
+    const std::string json = R"({"model": "cloth", "cloth": {"nx": 32, "ny": 32, "pins": ["top-edge"], "orientation": "horizontal"},
+        "springs": {"structural": {"k": 100, "kd": 0.01}, "shear": {"k": 50}, "bending": {"k": 10}},
+        "forces": {"air_damping": 0.001}, "solver": {"method": "implicit_euler"}})";
+    return parseScene(json, "implicit", {"solver.dt=" + std::to_string(dt), "solver.threads=" + std::to_string(threads)});
+}
+Matrix3X implicitRun(double dt, double seconds, ImplicitSolve how, int threads = 1) {
+    auto sim = makeSimulation(implicitCloth(dt, threads));
+    dynamic_cast<MassSpringSimulation&>(*sim).implicitSolver().setSolve(how);
+    for (int k = 0; k < static_cast<int>(std::lround(seconds / dt)); ++k) sim->step();
+    return sim->state().x;
+}
+}  // namespace
+
+TEST(ImplicitBlockCg, ItsSolverErrorIsFarBelowTheStepsOwnError) {
+    // Against the exact solve (sparse Cholesky) after 0.5 s: the tolerance (relative residual 1e-3)
+    // moves the cloth far less than halving Δt does, i.e. than the method's own error.
+    const Matrix3X exact = implicitRun(0.01, 0.5, ImplicitSolve::Cholesky);
+    const Matrix3X cg = implicitRun(0.01, 0.5, ImplicitSolve::BlockCg);
+    const Matrix3X halfStep = implicitRun(0.005, 0.5, ImplicitSolve::Cholesky);
+    const double solverError = (cg - exact).cwiseAbs().maxCoeff(), stepError = (halfStep - exact).cwiseAbs().maxCoeff();
+    EXPECT_GT(stepError, 1e-3) << "the cloth must move";
+    EXPECT_LT(solverError, 0.05 * stepError) << "solver " << solverError << " m, step " << stepError << " m";
+}
+
+TEST(ImplicitBlockCg, TwoThreadsGiveTheSerialStateBitForBit) {
+    const Matrix3X one = implicitRun(0.01, 0.2, ImplicitSolve::BlockCg, 1);
+    const Matrix3X two = implicitRun(0.01, 0.2, ImplicitSolve::BlockCg, 2);
+    EXPECT_TRUE(bitIdentical(one, two)) << "max difference " << (one - two).cwiseAbs().maxCoeff();
+}
+
+TEST(ImplicitBlockCg, ReportsItsResidual) {
+    auto sim = makeSimulation(implicitCloth(0.01, 1));
+    for (int k = 0; k < 5; ++k) sim->step();
+    double residual = -1.0, iterations = -1.0;
+    for (const Metric& m : sim->metrics()) {
+        if (m.name == "solve_residual") residual = m.value;
+        if (m.name == "solve_iterations") iterations = m.value;
+    }
+    EXPECT_GT(residual, 0.0);
+    EXPECT_LE(residual, 1e-3);
+    EXPECT_GT(iterations, 0.0);
 }

@@ -8,6 +8,7 @@
 #include "clothlab/exercise/02_mfn.h"
 #include "clothlab/sim/energy.h"
 #include "clothlab/sim/provot.h"
+#include "clothlab/sim/sweeps.h"
 
 namespace clothlab {
 
@@ -102,6 +103,7 @@ MassSpringSimulation::MassSpringSimulation(const Scene& scene, MassSpringModel m
             term(x, v, out);
         }
     };
+    implicit_.setThreads(sweepThreads(scene.solver.threads));
     integrate_pass_ = timer_.add(std::string("integrate: ") + methodName(scene.solver.method));
     if (scene.provot.enabled && !springs_.empty()) provot_pass_ = timer_.add("provot: strain limit");
     analytic_ = singleSpringAnalytic(scene);
@@ -156,6 +158,10 @@ double MassSpringSimulation::analyticError() const {
 }
 
 void MassSpringSimulation::addMetrics(std::vector<Metric>& m) const {
+    if (scene_.solver.method == Method::ImplicitEuler) {  // how exactly the last step's linear system was solved
+        m.push_back({"solve_residual", implicit_.residual(), "1"});
+        m.push_back({"solve_iterations", static_cast<double>(implicit_.iterations()), "1"});
+    }
     if (!analytic_) return;
     m.push_back({"error", analyticError(), "m"});
     m.push_back({"max_error", max_error_, "m"});
