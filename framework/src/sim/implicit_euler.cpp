@@ -164,6 +164,18 @@ bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w
         rz = rzNew;
     }
     if (!dv.allFinite()) return false;
+    // Momentum: the springs' blocks cancel in Σ_i (A Δv)_i, so the momentum the step adds is Σ_i b_i
+    // − Σ_i r_i, off by the residual's sum. Shifting every Δv_i by δ = Σ r_i / Σ (m_i + Δt c) removes
+    // it (a uniform shift stretches no spring between free particles): internal forces then conserve
+    // momentum exactly, as with the exact solve.
+    applyA(springs, w, dt * c, dv, Ap);
+    r = bBlock_ - Ap;
+    Vec3 rSum = Vec3::Zero();
+    double mSum = 0.0;
+    for (int i = 0; i < n; ++i)
+        if (w[i] > 0.0) rSum += r.col(i), mSum += 1.0 / w[i] + dt * c;
+    for (int i = 0; i < n; ++i)
+        if (w[i] > 0.0) dv.col(i) += rSum / mSum;
     applyA(springs, w, dt * c, dv, Ap);  // the true residual, not the recurrence's
     r = bBlock_ - Ap;
     residual_ = bb > 0.0 ? std::sqrt(dot(r, r, threads_) / bb) : 0.0;
