@@ -60,8 +60,8 @@ TEST(Parallel, NoTwoConstraintsOfAColourGroupShareAParticle) {
               0);
     EXPECT_EQ(sharedParticles(sim.bendingPlan(), stencils.size(),
                               [&](int n) {
-                                  const BendingStencil& s = stencils[n];
-                                  return std::vector<int>{s.i1, s.i2, s.i3, s.i4};
+                                  const BendingStencil& stencil = stencils[n];
+                                  return std::vector<int>{stencil.i1, stencil.i2, stencil.i3, stencil.i4};
                               }),
               0);
     // Colour order makes few, large groups (a grid with diagonals needs a handful of colours).
