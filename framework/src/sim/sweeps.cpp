@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <exception>
+
 #include "clothlab/exercise/04_distance.h"
 #include "clothlab/sim/xpbd.h"
 
@@ -15,6 +17,17 @@ void addCorrection(const BendingStencil& s, const BendingCorrection& c, Matrix3X
     p.col(s.i4) += c.dp4;
 }
 
+/// Runs f; an exception it throws (a stub's "not implemented", say) is kept in `error` (the first one).
+template <class F>
+void rethrowLater(const F& f, std::exception_ptr& error) {
+    try {
+        f();
+    } catch (...) {
+#pragma omp critical(clothlab_sweep_error)
+        if (!error) error = std::current_exception();
+    }
+}
+
 /// Calls project(n) for the constraints n = 0 .. count − 1: group after group, the constraints of
 /// one group in parallel (they share no particle, so the order within a group does not matter).
 template <class Project>
@@ -25,8 +38,10 @@ void forEachConstraint(size_t count, const SweepPlan& plan, const Project& proje
     }
     for (size_t g = 0; g + 1 < plan.groups.size(); ++g) {
         const int first = plan.groups[g], last = plan.groups[g + 1];
+        std::exception_ptr error;  // an exception must not leave a parallel loop: rethrown after it
 #pragma omp parallel for num_threads(plan.threads) if (plan.threads > 1)
-        for (int n = first; n < last; ++n) project(n);
+        for (int n = first; n < last; ++n) rethrowLater([&] { project(n); }, error);
+        if (error) std::rethrow_exception(error);
     }
 }
 }  // namespace
@@ -103,12 +118,16 @@ void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, con
     }
     start.push_back(static_cast<int>(contacts.size()));
     const int runs = static_cast<int>(start.size()) - 1;
+    std::exception_ptr error;
 #pragma omp parallel for num_threads(threads) if (threads > 1 && increasing)
     for (int r = 0; r < runs; ++r)
-        for (int k = start[static_cast<size_t>(r)]; k < start[static_cast<size_t>(r) + 1]; ++k) {
-            const CollisionConstraint& c = contacts[static_cast<size_t>(k)];
-            p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
-        }
+        rethrowLater([&] {
+            for (int k = start[static_cast<size_t>(r)]; k < start[static_cast<size_t>(r) + 1]; ++k) {
+                const CollisionConstraint& c = contacts[static_cast<size_t>(k)];
+                p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
+            }
+        }, error);
+    if (error) std::rethrow_exception(error);
 }
 
 }  // namespace clothlab
