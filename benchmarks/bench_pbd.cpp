@@ -123,22 +123,35 @@ static void BM_BendingProjectionBatchedStaged(benchmark::State& st) { bendingBat
 BENCHMARK(BM_BendingProjectionBatchedStaged);
 #endif
 
-// One full PBD step (gravity, distance + bending, 10 iterations) of an n x n cloth pinned at two
+// One full step (gravity, distance + bending, 10 iterations) of an n x n cloth pinned at two
 // corners, held horizontally at the start. Timed after one second (100 steps) of draping, when the
 // stencils are bent: a flat cloth would be cheaper, since flat stencils take the early exit.
-static void pbdStep(benchmark::State& st, const std::string& bendingKernel) {
+// Arguments: n, threads (solver.threads). Wall-clock time (the threads' work is not the main
+// thread's CPU time).
+static void step(benchmark::State& st, const std::string& bendingKernel, const std::string& method) {
     const int n = static_cast<int>(st.range(0));
-    auto sim = makeSimulation(clothScene(n, bendingKernel, "horizontal"));
+    Scene scene = clothScene(n, bendingKernel, "horizontal");
+    scene.solver.method = method == "xpbd" ? Method::Xpbd : Method::Pbd;
+    scene.solver.threads = static_cast<int>(st.range(1));
+    auto sim = makeSimulation(scene);
     for (int k = 0; k < 100; ++k) sim->step();  // warm-up: the cloth drapes
     for (auto _ : st) sim->step();
     st.counters["per_particle"] = benchmark::Counter(static_cast<double>(n) * n * st.iterations(),
                                                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
-static void BM_PbdStep(benchmark::State& st) { pbdStep(st, "exercise"); }
-BENCHMARK(BM_PbdStep)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+// n = 32, 64, 128 on one thread; 64 and 128 on two.
+static void stepArgs(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"n", "threads"})->Args({32, 1})->Args({64, 1})->Args({128, 1})->Args({64, 2})->Args({128, 2});
+    b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+static void BM_PbdStep(benchmark::State& st) { step(st, "exercise", "pbd"); }
+BENCHMARK(BM_PbdStep)->Apply(stepArgs);
+// XPBD with the same iterations and substeps (its bending calls exercise 5.2 too).
+static void BM_XpbdStep(benchmark::State& st) { step(st, "exercise", "xpbd"); }
+BENCHMARK(BM_XpbdStep)->Apply(stepArgs);
 #ifdef CLOTHLAB_BENCH_BATCHED
-static void BM_PbdStepBatched(benchmark::State& st) { pbdStep(st, "batched"); }
-BENCHMARK(BM_PbdStepBatched)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+static void BM_PbdStepBatched(benchmark::State& st) { step(st, "batched", "pbd"); }
+BENCHMARK(BM_PbdStepBatched)->Apply(stepArgs);
 #endif
 
 BENCHMARK_MAIN();

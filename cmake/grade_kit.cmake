@@ -57,7 +57,7 @@ file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
   \"system_includes\": [\"$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,\", \">\"],
   \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_graded_main>,\", \">\"],
   \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:tinyobjloader::tinyobjloader_double>\", \"$<TARGET_FILE:GTest::gtest>\"],
-  \"link_flags\": [\"-pthread\"],
+  \"link_flags\": [\"-pthread\", \"-fopenmp\"],
   \"client_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_remote_peer>;$<TARGET_OBJECTS:clothlab_remote_client>,\", \">\"],
   \"server_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_submission_main>;$<TARGET_OBJECTS:clothlab_remote_peer>,\", \">\"],
   \"server_link_flags\": [\"-lseccomp\"],

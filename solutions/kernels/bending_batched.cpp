@@ -101,15 +101,15 @@ constexpr AtanCoefficients kAtan;
     d4x = f4 * q4x, d4y = f4 * q4y, d4z = f4 * q4z;
 }
 
-// BendingBlocks as plain pointers, for the sweeps' loops.
+// Blocks firstBlock .. lastBlock − 1 of BendingBlocks as plain pointers, for the sweeps' loops.
 struct BlockArrays {
     const int *i1, *i2, *i3, *i4;  // particles of each stencil
     const double* phi0;            // rest angle of each stencil
     const int* start;              // block b: stencils start[b] .. start[b+1] − 1
-    int blocks;                    // number of blocks
-    explicit BlockArrays(const BendingBlocks& B)
+    int first, last;               // the blocks to sweep
+    BlockArrays(const BendingBlocks& B, int firstBlock, int lastBlock)
         : i1(B.i1.data()), i2(B.i2.data()), i3(B.i3.data()), i4(B.i4.data()), phi0(B.phi0.data()),
-          start(B.start.data()), blocks(static_cast<int>(B.start.size()) - 1) {}
+          start(B.start.data()), first(firstBlock), last(lastBlock) {}
 };
 
 // target_clones with "arch=x86-64-vN" needs GCC 12 and ifunc (glibc); elsewhere one plain build.
@@ -126,7 +126,7 @@ __attribute__((target_clones("default", "arch=x86-64-v4")))
 #endif
 void sweepDirect(const BlockArrays& B, const double* w, double k, double* P) {
     const int *I1 = B.i1, *I2 = B.i2, *I3 = B.i3, *I4 = B.i4;
-    for (int blk = 0; blk < B.blocks; ++blk) {
+    for (int blk = B.first; blk < B.last; ++blk) {
         const int first = B.start[blk], last = B.start[blk + 1];
 #pragma omp simd
         for (int s = first; s < last; ++s) {
@@ -153,7 +153,7 @@ __attribute__((target_clones("default", "arch=x86-64-v3")))
 void sweepStaged(const BlockArrays& B, const double* w, double k, double* P) {
     const int *I1 = B.i1, *I2 = B.i2, *I3 = B.i3, *I4 = B.i4;
     alignas(64) double Dp[12][kBendingBlockSize];
-    for (int blk = 0; blk < B.blocks; ++blk) {
+    for (int blk = B.first; blk < B.last; ++blk) {
         const int first = B.start[blk], n = B.start[blk + 1] - first;
 #pragma omp simd
         for (int l = 0; l < n; ++l) {
@@ -175,18 +175,25 @@ void sweepStaged(const BlockArrays& B, const double* w, double k, double* P) {
 
 double atan2Upper(double y, double x) { return angleUpper(y, x); }
 
-BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils) {
+BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils, const SweepPlan& plan) {
     BendingBlocks B;
+    B.threads = plan.threads;
     int maxIndex = -1;
     for (const BendingStencil& s : stencils) maxIndex = std::max({maxIndex, s.i1, s.i2, s.i3, s.i4});
     std::vector<int> blockOf(static_cast<size_t>(maxIndex + 1), -1);  // last block a particle is in
+    size_t group = 0;  // the plan's group of the next stencil
     for (const BendingStencil& s : stencils) {
-        const int current = static_cast<int>(B.start.size()) - 1;
+        const int n = static_cast<int>(B.i1.size()), current = static_cast<int>(B.start.size()) - 1;
+        const bool groupStarts = group < plan.groups.size() && plan.groups[group] == n;
+        while (group < plan.groups.size() && plan.groups[group] <= n) ++group;
         const int ids[4] = {s.i1, s.i2, s.i3, s.i4};
         bool shares = false;
         for (int i : ids) shares = shares || blockOf[static_cast<size_t>(i)] == current;
-        const int size = current < 0 ? 0 : static_cast<int>(B.i1.size()) - B.start.back();
-        if (current < 0 || shares || size == kBendingBlockSize) B.start.push_back(static_cast<int>(B.i1.size()));
+        const int size = current < 0 ? 0 : n - B.start.back();
+        // A new colour group: the blocks before it are one group (the shared-particle cut only
+        // applies without a plan, where all blocks form one serial group).
+        if (groupStarts && n > 0) B.groups.push_back(current + 1);
+        if (current < 0 || shares || groupStarts || size == kBendingBlockSize) B.start.push_back(n);
         for (int i : ids) blockOf[static_cast<size_t>(i)] = static_cast<int>(B.start.size()) - 1;
         B.i1.push_back(s.i1);
         B.i2.push_back(s.i2);
@@ -195,6 +202,8 @@ BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils) {
         B.phi0.push_back(s.phi0);
     }
     B.start.push_back(static_cast<int>(B.i1.size()));
+    B.groups.insert(B.groups.begin(), 0);
+    B.groups.push_back(static_cast<int>(B.start.size()) - 1);
     return B;
 }
 
@@ -208,10 +217,12 @@ bool bendingBlocksUseScatter() {
 }
 
 void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, BendingLoop loop) {
-    if (loop == BendingLoop::Best && bendingBlocksUseScatter())
-        sweepDirect(BlockArrays(blocks), w.data(), k, p.data());
-    else
-        sweepStaged(BlockArrays(blocks), w.data(), k, p.data());
+    const auto sweep = loop == BendingLoop::Best && bendingBlocksUseScatter() ? sweepDirect : sweepStaged;
+    for (size_t g = 0; g + 1 < blocks.groups.size(); ++g) {
+        const int first = blocks.groups[g], last = blocks.groups[g + 1];
+#pragma omp parallel for num_threads(blocks.threads) if (blocks.threads > 1)
+        for (int b = first; b < last; ++b) sweep(BlockArrays(blocks, b, b + 1), w.data(), k, p.data());
+    }
 }
 
 }  // namespace clothlab

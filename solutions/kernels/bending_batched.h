@@ -24,6 +24,7 @@
 
 #include "clothlab/core/types.h"
 #include "clothlab/exercise/05_bending.h"
+#include "clothlab/sim/sweeps.h"
 
 namespace clothlab {
 
@@ -36,17 +37,23 @@ struct BendingBlocks {
     std::vector<int> i4;              ///< particle i4 of each stencil
     std::vector<double> phi0;         ///< rest angle φ0 of each stencil, rad
     std::vector<int> start;           ///< block b holds stencils start[b] .. start[b+1] − 1 (one more entry than blocks)
+    /// Colour group g holds blocks groups[g] .. groups[g+1] − 1: the blocks of a group share no
+    /// particle and are projected in parallel.
+    std::vector<int> groups;
+    int threads = 1;                  ///< threads per colour group (1: serial)
 };
 
 /// Largest number of stencils in one block (the vector loop's width: 8 doubles × 2).
 constexpr int kBendingBlockSize = 16;
 
 /// Cuts the stencils, kept in their order, into blocks: a stencil starts a new block when it shares a
-/// particle with a stencil of the current block or the block holds kBendingBlockSize stencils. In the
-/// solver's colour order (colourOrder()) almost every block is full.
+/// particle with a stencil of the current block, when the block holds kBendingBlockSize stencils or
+/// when a colour group of the plan starts. In the solver's colour order (colourOrder()) almost every
+/// block is full.
 /// @param stencils  the stencils in the order the sweep projects them
+/// @param plan      their colour groups and threads (sweepPlan()); default: one group, serial
 /// @return          the same stencils as blocks; projecting block by block equals projecting one by one
-BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils);
+BendingBlocks bendingBlocks(const std::vector<BendingStencil>& stencils, const SweepPlan& plan = {});
 
 /// Which vector loop projectBendingBlocks() runs.
 enum class BendingLoop {
@@ -54,7 +61,8 @@ enum class BendingLoop {
     Staged,  ///< the loop without scatter instructions (AVX2, plain x86-64, other CPUs); forced for tests
 };
 
-/// One Gauss–Seidel sweep over the stencils, block by block: the same result as projectBendingSweep()
+/// One Gauss–Seidel sweep over the stencils, colour group by colour group, the blocks of a group in
+/// parallel (blocks.threads; bit-identical for every number of threads): the same result as projectBendingSweep()
 /// with the reference exercise 5.2 up to rounding (closer to exact near flat), with the correction in
 /// the form of this file's header. No correction (never NaN) in the cases where exercise 5.2 gives
 /// none: a zero-area triangle (L_1 or L_2 below 1e-24 m⁴), flat or folded

@@ -10,8 +10,8 @@ namespace clothlab {
 namespace {
 
 const bool registered = [] {
-    registerBendingSweep("batched", [](const std::vector<BendingStencil>& stencils) -> BendingSweep {
-        auto blocks = std::make_shared<const BendingBlocks>(bendingBlocks(stencils));
+    registerBendingSweep("batched", [](const std::vector<BendingStencil>& stencils, const SweepPlan& plan) -> BendingSweep {
+        auto blocks = std::make_shared<const BendingBlocks>(bendingBlocks(stencils, plan));
         return [blocks](const VectorX& w, double k, Matrix3X& p) { projectBendingBlocks(*blocks, w, k, p); };
     });
     return true;

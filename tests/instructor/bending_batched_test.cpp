@@ -2,6 +2,7 @@
 // reference: the same sweep as projectBendingSweep() with the stage-05 reference code, on crumpled
 // cloths and on every degenerate stencil, and its arctan polynomial against std::atan2.
 // In tests/instructor/ because the long-double check below spells out the solution of stage 05.
+#include <cstring>
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
@@ -243,5 +244,21 @@ TEST(BendingBatched, SceneOptionRunsTheSameSimulation) {
     EXPECT_GT((none->state().x - ref->state().x).cwiseAbs().maxCoeff(), 1e-2) << "bending must matter here";
     EXPECT_LE((fast->state().x - ref->state().x).cwiseAbs().maxCoeff(), 1e-9);
     EXPECT_THROW(makeSimulation(hangingScene({"solver.method=xpbd", "solver.bending_kernel=batched"})), InputError);
+}
+
+TEST(BendingBatched, TwoThreadsGiveTheSerialStateBitForBit) {
+    // The blocks of one colour group run in parallel (solver.threads): the same state bit for bit.
+    const std::vector<std::string> sets = {"cloth.orientation=horizontal", "cloth.nx=48", "cloth.ny=40",
+                                           "solver.bending_kernel=batched"};
+    Matrix3X x[2];
+    for (int threads : {1, 2}) {
+        std::vector<std::string> s = sets;
+        s.push_back("solver.threads=" + std::to_string(threads));
+        auto sim = makeSimulation(hangingScene(s));
+        for (int i = 0; i < 60; ++i) sim->step();
+        x[threads - 1] = sim->state().x;
+    }
+    EXPECT_EQ(std::memcmp(x[0].data(), x[1].data(), sizeof(double) * static_cast<size_t>(x[0].size())), 0)
+        << "max difference " << (x[0] - x[1]).cwiseAbs().maxCoeff();
 }
 #endif

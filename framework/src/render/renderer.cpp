@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace clothlab {
 
@@ -22,22 +24,37 @@ void setMaterial(GLenum face, const Eigen::Vector3f& c, float spec, float shinin
     glMaterialf(face, GL_SHININESS, shininess);
 }
 
-// A unit sphere as triangle strips (lat-long), drawn at centre c with radius r.
-void drawSphere(const Vec3& c, double r, int slices = 32, int stacks = 16) {
-    for (int i = 0; i < stacks; ++i) {
-        const double t0 = kPi * i / stacks - kPi / 2, t1 = kPi * (i + 1) / stacks - kPi / 2;
-        glBegin(GL_TRIANGLE_STRIP);
+// A unit sphere (lat-long), as the triangles of `stacks` triangle strips in their winding order;
+// made once per resolution.
+const TriangleList& unitSphere(int slices, int stacks) {
+    static std::map<std::pair<int, int>, TriangleList> made;
+    TriangleList& t = made[{slices, stacks}];
+    if (!t.idx.empty()) return t;
+    for (int i = 0; i <= stacks; ++i)
         for (int j = 0; j <= slices; ++j) {
-            const double p = 2 * kPi * j / slices;
-            for (double t : {t0, t1}) {
-                const Vec3 n(std::cos(t) * std::cos(p), std::sin(t), std::cos(t) * std::sin(p));
-                glNormal3d(n.x(), n.y(), n.z());
-                const Vec3 v = c + r * n;
-                glVertex3d(v.x(), v.y(), v.z());
-            }
+            const double th = kPi * i / stacks - kPi / 2, ph = 2 * kPi * j / slices;
+            const Vec3 n(std::cos(th) * std::cos(ph), std::sin(th), std::cos(th) * std::sin(ph));
+            for (int k = 0; k < 3; ++k) t.xyz.push_back(static_cast<float>(n[k])), t.nrm.push_back(static_cast<float>(n[k]));
         }
-        glEnd();
+    const auto at = [slices](int i, int j) { return static_cast<unsigned>(i * (slices + 1) + j); };
+    for (int i = 0; i < stacks; ++i) {
+        std::vector<unsigned> strip;  // the strip's vertices: (i, j), (i + 1, j) for j = 0 .. slices
+        for (int j = 0; j <= slices; ++j) strip.push_back(at(i, j)), strip.push_back(at(i + 1, j));
+        for (size_t k = 0; k + 2 < strip.size(); ++k) {  // triangle k of a strip; odd ones swap their first two
+            const bool odd = k % 2;
+            t.idx.insert(t.idx.end(), {strip[odd ? k + 1 : k], strip[odd ? k : k + 1], strip[k + 2]});
+        }
     }
+    return t;
+}
+
+// A sphere at centre c with radius r (GL_NORMALIZE keeps the scaled normals unit).
+void drawSphere(const Vec3& c, double r, int slices = 32, int stacks = 16) {
+    glPushMatrix();
+    glTranslated(c.x(), c.y(), c.z());
+    glScaled(r, r, r);
+    drawTriangleList(unitSphere(slices, stacks));
+    glPopMatrix();
 }
 
 // An orthonormal pair spanning the plane with normal n.
@@ -79,6 +96,18 @@ void lights() {
 }
 
 }  // namespace
+
+void drawTriangleList(const TriangleList& t) {
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, t.xyz.data());
+    if (!t.nrm.empty()) {
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glNormalPointer(GL_FLOAT, 0, t.nrm.data());
+    }
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(t.idx.size()), GL_UNSIGNED_INT, t.idx.data());
+    glDisableClientState(GL_NORMAL_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+}
 
 Eigen::Vector3f edgeKindColor(EdgeKind kind) {
     switch (kind) {
@@ -184,10 +213,16 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
         glColor4f(0.1f, 0.12f, 0.18f, 0.12f);
         const double sy = gy + 1e-3 * scale;
         if (!d.triangles.empty()) {
-            glBegin(GL_TRIANGLES);
-            for (const auto& t : d.triangles)
-                for (int k = 0; k < 3; ++k) glVertex3d(d.x(0, t[k]), sy, d.x(2, t[k]));
-            glEnd();
+            TriangleList& shadow = scratch_;
+            shadow.xyz.resize(3 * static_cast<size_t>(d.x.cols()));
+            shadow.nrm.clear();
+            for (int i = 0; i < d.x.cols(); ++i) {
+                shadow.xyz[3 * i] = static_cast<float>(d.x(0, i));
+                shadow.xyz[3 * i + 1] = static_cast<float>(sy);
+                shadow.xyz[3 * i + 2] = static_cast<float>(d.x(2, i));
+            }
+            triangleIndices(d, shadow.idx);
+            drawTriangleList(shadow);
         }
         for (const Collider& c : d.colliders) {
             if (c.type != Collider::Type::Sphere || !opt.colliders) continue;
@@ -259,26 +294,31 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     glFinish();
 }
 
+void Renderer::triangleIndices(const DrawData& d, std::vector<unsigned>& idx) {
+    idx.clear();
+    for (const auto& t : d.triangles)
+        for (int k = 0; k < 3; ++k) idx.push_back(static_cast<unsigned>(t[k]));
+}
+
 void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
     const int n = static_cast<int>(d.x.cols());
-    // Vertex normals: area-weighted sum of the face normals around each particle.
+    // Smooth shading: per-vertex normals, the area-weighted sum of the face normals around each particle.
     Matrix3X nrm = Matrix3X::Zero(3, n);
     for (const auto& t : d.triangles) {
         const Vec3 fn = (d.x.col(t[1]) - d.x.col(t[0])).cross(d.x.col(t[2]) - d.x.col(t[0]));
         for (int k = 0; k < 3; ++k) nrm.col(t[k]) += fn;
     }
-    buf_.resize(3 * static_cast<size_t>(n));
-    nrm_.resize(3 * static_cast<size_t>(n));
+    TriangleList& cloth = scratch_;
+    cloth.xyz.resize(3 * static_cast<size_t>(n));
+    cloth.nrm.resize(3 * static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
         const double len = nrm.col(i).norm();
         for (int k = 0; k < 3; ++k) {
-            buf_[3 * i + k] = static_cast<float>(d.x(k, i));
-            nrm_[3 * i + k] = static_cast<float>(len > 0 ? nrm(k, i) / len : (k == 2));
+            cloth.xyz[3 * i + k] = static_cast<float>(d.x(k, i));
+            cloth.nrm[3 * i + k] = static_cast<float>(len > 0 ? nrm(k, i) / len : (k == 2));
         }
     }
-    idx_.clear();
-    for (const auto& t : d.triangles)
-        for (int k = 0; k < 3; ++k) idx_.push_back(static_cast<unsigned>(t[k]));
+    triangleIndices(d, cloth.idx);
 
     const bool textured = d.uv.cols() == n;
     std::vector<float> uv;  // texture coordinates, alive until the draw call
@@ -315,17 +355,11 @@ void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
     setMaterial(GL_BACK, {0.30f, 0.52f, 0.85f}, 0.15f, 24);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1, 1);
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glEnableClientState(GL_NORMAL_ARRAY);
-    glVertexPointer(3, GL_FLOAT, 0, buf_.data());
-    glNormalPointer(GL_FLOAT, 0, nrm_.data());
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx_.size()), GL_UNSIGNED_INT, idx_.data());
+    drawTriangleList(cloth);
     if (textured) {
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         glDisable(GL_TEXTURE_2D);
     }
-    glDisableClientState(GL_VERTEX_ARRAY);
-    glDisableClientState(GL_NORMAL_ARRAY);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_LIGHTING);
 }
@@ -333,14 +367,19 @@ void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
 void Renderer::drawEdges(const DrawData& d, const RenderOptions& opt, double scale) {
     glDisable(GL_LIGHTING);
     glLineWidth(opt.line_width);
-    glBegin(GL_LINES);
+    lines_.clear();
+    colours_.clear();
+    // A segment a-b in colour c, into the vertex arrays drawn at the end.
+    const auto segment = [this](const Vec3& a, const Vec3& b, const Eigen::Vector3f& c) {
+        for (const Vec3* p : {&a, &b})
+            for (int k = 0; k < 3; ++k) lines_.push_back(static_cast<float>((*p)[k])), colours_.push_back(c[k]);
+    };
     for (size_t e = 0; e < d.edges.size(); ++e) {
         const EdgeKind kind = d.edge_kind.size() == d.edges.size() ? d.edge_kind[e] : EdgeKind::Single;
         if (!opt.show_kind[static_cast<int>(kind)]) continue;
         const Eigen::Vector3f c = opt.color_by_strain && d.rest_length.size() == d.edges.size()
                                       ? strainColor(d.strain(static_cast<int>(e)), opt.strain_range)
                                       : edgeKindColor(kind);
-        glColor3f(c[0], c[1], c[2]);
         const Vec3 a = d.x.col(d.edges[e][0]), b = d.x.col(d.edges[e][1]);
         if (kind == EdgeKind::Single && d.edges.size() <= 200) {
             // Draw a lone spring as a coil: a helix around the segment from a to b.
@@ -358,16 +397,20 @@ void Renderer::drawEdges(const DrawData& d, const RenderOptions& opt, double sca
                 const double env = (s < 0.08 || s > 0.92) ? 0.0 : 1.0;  // straight ends
                 const double phi = 2 * kPi * turns * s;
                 const Vec3 p = a + s * axis + env * r * (std::cos(phi) * u + std::sin(phi) * v);
-                glVertex3d(prev.x(), prev.y(), prev.z());
-                glVertex3d(p.x(), p.y(), p.z());
+                segment(prev, p, c);
                 prev = p;
             }
         } else {
-            glVertex3d(a.x(), a.y(), a.z());
-            glVertex3d(b.x(), b.y(), b.z());
+            segment(a, b, c);
         }
     }
-    glEnd();
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, lines_.data());
+    glColorPointer(3, GL_FLOAT, 0, colours_.data());
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines_.size() / 3));
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
     glLineWidth(1.0f);
 }
 
@@ -414,9 +457,13 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
     if (opt.particles && n <= 20000) {
         glPointSize(n > 2000 ? 2.0f : 3.5f);
         glColor3f(0.20f, 0.20f, 0.25f);
-        glBegin(GL_POINTS);
-        for (int i = 0; i < n; ++i) glVertex3d(d.x(0, i), d.x(1, i), d.x(2, i));
-        glEnd();
+        lines_.resize(3 * static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) lines_[3 * i + k] = static_cast<float>(d.x(k, i));
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glVertexPointer(3, GL_FLOAT, 0, lines_.data());
+        glDrawArrays(GL_POINTS, 0, n);
+        glDisableClientState(GL_VERTEX_ARRAY);
     }
     glDisable(GL_BLEND);
     glDisable(GL_POINT_SMOOTH);

@@ -23,12 +23,12 @@ std::vector<std::string> bendingSweepNames() {
     return names;
 }
 
-BendingSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils) {
+BendingSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils, const SweepPlan& plan) {
     if (name == "exercise")
-        return [stencils](const VectorX& w, double k, Matrix3X& p) { projectBendingSweep(stencils, w, k, p); };
+        return [stencils, plan](const VectorX& w, double k, Matrix3X& p) { projectBendingSweep(stencils, w, k, p, plan); };
     const auto it = registry().find(name);
     if (it == registry().end()) throw std::out_of_range("no bending sweep \"" + name + "\" is registered");
-    return it->second(stencils);
+    return it->second(stencils, plan);
 }
 
 }  // namespace clothlab

@@ -1,6 +1,7 @@
 #include "clothlab/sim/implicit_euler.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace clothlab {
 namespace {
@@ -18,6 +19,24 @@ void addPairBlocks(std::vector<Triplet>& t, int a, int b, const Mat3& B) {
                 t.emplace_back(b + r, a + c, -B(r, c));
             }
         }
+}
+
+constexpr double kTolerance = 1e-3;  // relative residual |b − A Δv| / |b| of the iterative solves
+constexpr int kChunk = 1024;         // particles per partial sum of a dot product (fixed: the same sum on any number of threads)
+
+/// Σ_i a_i · b_i over the columns of two 3 x N matrices, in fixed chunks added in order (the same
+/// bits for every number of threads).
+double dot(const Matrix3X& a, const Matrix3X& b, int threads) {
+    const int n = static_cast<int>(a.cols()), chunks = (n + kChunk - 1) / kChunk;
+    std::vector<double> part(static_cast<size_t>(chunks));
+#pragma omp parallel for num_threads(threads) if (threads > 1)
+    for (int c = 0; c < chunks; ++c) {
+        const int first = c * kChunk, count = std::min(kChunk, n - first);
+        part[static_cast<size_t>(c)] = (a.middleCols(first, count).array() * b.middleCols(first, count).array()).sum();
+    }
+    double sum = 0.0;
+    for (double p : part) sum += p;
+    return sum;
 }
 }  // namespace
 
@@ -48,6 +67,125 @@ void addSpringJacobians(const std::vector<Spring>& springs, const Matrix3X& x, c
 
 int ImplicitEulerSolver::offset(int r, int c) { return static_cast<int>(&A_.coeffRef(r, c) - A_.valuePtr()); }
 
+void ImplicitEulerSolver::buildBlocks(const VectorX& w, const std::vector<Spring>& springs) {
+    const int n = static_cast<int>(w.size());
+    // Per particle the springs it belongs to (CSR): springs of particle i are adj_[adjStart_[i] .. adjStart_[i+1] − 1].
+    adjStart_.assign(static_cast<size_t>(n) + 1, 0);
+    for (const Spring& s : springs) ++adjStart_[static_cast<size_t>(s.i) + 1], ++adjStart_[static_cast<size_t>(s.j) + 1];
+    for (int i = 0; i < n; ++i) adjStart_[static_cast<size_t>(i) + 1] += adjStart_[static_cast<size_t>(i)];
+    adj_.resize(static_cast<size_t>(adjStart_.back()));
+    std::vector<int> fill(adjStart_.begin(), adjStart_.end() - 1);
+    for (size_t k = 0; k < springs.size(); ++k) {
+        adj_[static_cast<size_t>(fill[static_cast<size_t>(springs[k].i)]++)] = static_cast<int>(k);
+        adj_[static_cast<size_t>(fill[static_cast<size_t>(springs[k].j)]++)] = static_cast<int>(k);
+    }
+    B_.resize(springs.size());
+    Kv_.resize(springs.size());
+    Dinv_.resize(static_cast<size_t>(n));
+    dvBlock_.setZero(3, n);
+}
+
+void ImplicitEulerSolver::applyA(const std::vector<Spring>& springs, const VectorX& w, double mDiag, const Matrix3X& x,
+                                 Matrix3X& y) const {
+    // (A x)_i = (m_i + Δt c) x_i + Σ_{springs s of i} B_s (x_i − x_other); pinned rows are zero (x is zero there)
+    const int n = static_cast<int>(x.cols());
+#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
+    for (int i = 0; i < n; ++i) {
+        if (!(w[i] > 0.0)) {
+            y.col(i).setZero();
+            continue;
+        }
+        Vec3 yi = (1.0 / w[i] + mDiag) * x.col(i);
+        for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
+            const Spring& s = springs[static_cast<size_t>(adj_[static_cast<size_t>(e)])];
+            yi += B_[static_cast<size_t>(adj_[static_cast<size_t>(e)])] * (x.col(i) - x.col(s.i == i ? s.j : s.i));
+        }
+        y.col(i) = yi;
+    }
+}
+
+bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w, const std::vector<Spring>& springs,
+                                      double c, double dt) {
+    const int n = static_cast<int>(x.cols());
+    // (2) per spring its block B = −Δt² K_jj − Δt D_jj and Δt² K_jj (v_j − v_i), each spring on its own (no race)
+    const int m = static_cast<int>(springs.size());
+#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
+    for (int k = 0; k < m; ++k) {
+        const Spring& s = springs[static_cast<size_t>(k)];
+        Mat3 Kjj, Djj;
+        springJacobianBlocks(s, x, Kjj, Djj);
+        B_[static_cast<size_t>(k)] = -dt * dt * Kjj - dt * Djj;
+        Kv_[static_cast<size_t>(k)] = dt * dt * Kjj * (v.col(s.j) - v.col(s.i));
+    }
+    // b_i = Δt f_i ± (K v) of its springs; the block-Jacobi preconditioner D_i⁻¹, D_i = (m_i + Δt c) I + Σ B_s; per particle
+    bBlock_.resize(3, n);
+#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
+    for (int i = 0; i < n; ++i) {
+        if (!(w[i] > 0.0)) {
+            bBlock_.col(i).setZero();
+            continue;
+        }
+        Vec3 bi = dt * f_.col(i);
+        Mat3 D = (1.0 / w[i] + dt * c) * Mat3::Identity();
+        for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
+            const size_t k = static_cast<size_t>(adj_[static_cast<size_t>(e)]);
+            bi += springs[k].j == i ? Kv_[k] : Vec3(-Kv_[k]);
+            D += B_[k];
+        }
+        bBlock_.col(i) = bi;
+        Dinv_[static_cast<size_t>(i)] = D.inverse();
+    }
+    // (3) preconditioned conjugate gradients from the previous step's Δv (pinned columns stay zero)
+    const auto precondition = [&](const Matrix3X& r, Matrix3X& z) {
+#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
+        for (int i = 0; i < n; ++i) z.col(i) = Dinv_[static_cast<size_t>(i)] * r.col(i);
+    };
+    Matrix3X& dv = dvBlock_;
+    for (int i = 0; i < n; ++i)
+        if (!(w[i] > 0.0)) dv.col(i).setZero();
+    Matrix3X r(3, n), z(3, n), p(3, n), Ap(3, n);
+    applyA(springs, w, dt * c, dv, Ap);
+    r = bBlock_ - Ap;
+    const double bb = dot(bBlock_, bBlock_, threads_);
+    const double goal = kTolerance * kTolerance * bb;
+    precondition(r, z);
+    p = z;
+    double rz = dot(r, z, threads_), rr = dot(r, r, threads_);
+    iterations_ = 0;
+    for (const int maxIterations = 6 * n; rr > goal && iterations_ < maxIterations; ++iterations_) {
+        applyA(springs, w, dt * c, p, Ap);
+        const double alpha = rz / dot(p, Ap, threads_);
+        dv += alpha * p;
+        r -= alpha * Ap;
+        rr = dot(r, r, threads_);
+        precondition(r, z);
+        const double rzNew = dot(r, z, threads_);
+        p = z + (rzNew / rz) * p;
+        rz = rzNew;
+    }
+    if (!dv.allFinite()) return false;
+    // Momentum: the springs' blocks cancel in Σ_i (A Δv)_i, so the momentum the step adds is Σ_i b_i
+    // − Σ_i r_i, off by the residual's sum. Shifting every Δv_i by δ = Σ r_i / Σ (m_i + Δt c) removes
+    // it (a uniform shift stretches no spring between free particles): internal forces then conserve
+    // momentum exactly, as with the exact solve.
+    applyA(springs, w, dt * c, dv, Ap);
+    r = bBlock_ - Ap;
+    Vec3 rSum = Vec3::Zero();
+    double mSum = 0.0;
+    for (int i = 0; i < n; ++i)
+        if (w[i] > 0.0) rSum += r.col(i), mSum += 1.0 / w[i] + dt * c;
+    for (int i = 0; i < n; ++i)
+        if (w[i] > 0.0) dv.col(i) += rSum / mSum;
+    applyA(springs, w, dt * c, dv, Ap);  // the true residual, not the recurrence's
+    r = bBlock_ - Ap;
+    residual_ = bb > 0.0 ? std::sqrt(dot(r, r, threads_) / bb) : 0.0;
+
+    // (4) v += Δv, x += Δt v (pinned particles keep their velocity: their Δv is zero)
+    v += dv;
+    x += dt * v;
+    return true;
+}
+
 void ImplicitEulerSolver::buildPattern(const VectorX& w, const std::vector<Spring>& springs) {
     const int n = static_cast<int>(w.size());
     index_.assign(static_cast<size_t>(n), -1);
@@ -64,23 +202,26 @@ void ImplicitEulerSolver::buildPattern(const VectorX& w, const std::vector<Sprin
     A_.makeCompressed();
     diag_.resize(static_cast<size_t>(unknowns));
     for (int r = 0; r < unknowns; ++r) diag_[static_cast<size_t>(r)] = offset(r, r);
+    // A block column's three rows are consecutive in the column (the pattern has whole 3x3 blocks).
+    const auto column = [&](int row, int col) { return row >= 0 && col >= 0 ? offset(row, col) : -1; };
     blocks_.assign(springs.size(), {});
     for (size_t k = 0; k < springs.size(); ++k) {
         const int a = index_[static_cast<size_t>(springs[k].i)], b = index_[static_cast<size_t>(springs[k].j)];
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) {
-                const int e = 3 * r + c;
-                blocks_[k][e] = a >= 0 ? offset(a + r, a + c) : -1;
-                blocks_[k][9 + e] = b >= 0 ? offset(b + r, b + c) : -1;
-                blocks_[k][18 + e] = a >= 0 && b >= 0 ? offset(a + r, b + c) : -1;
-                blocks_[k][27 + e] = a >= 0 && b >= 0 ? offset(b + r, a + c) : -1;
-            }
+        for (int c = 0; c < 3; ++c) {
+            blocks_[k][c] = column(a, a < 0 ? -1 : a + c);
+            blocks_[k][3 + c] = column(b, b < 0 ? -1 : b + c);
+            blocks_[k][6 + c] = column(a, b < 0 ? -1 : b + c);
+            blocks_[k][9 + c] = column(b, a < 0 ? -1 : a + c);
+        }
     }
     pattern_springs_ = springs.size();
-    use_cg_ = unknowns > 1500;
+    used_ = solve_ != ImplicitSolve::Auto ? solve_ : unknowns > 1500 ? ImplicitSolve::BlockCg : ImplicitSolve::Cholesky;
+    if (used_ == ImplicitSolve::BlockCg) buildBlocks(w, springs);
     dv_ = VectorX::Zero(unknowns);
-    if (use_cg_) cg_.setTolerance(1e-10);
-    else ldlt_.analyzePattern(A_);
+    cgJacobi_.setTolerance(1e-10);
+    cgIc_.setTolerance(kTolerance);
+    if (used_ == ImplicitSolve::Cholesky) ldlt_.analyzePattern(A_);
+    if (used_ == ImplicitSolve::CgIncompleteCholesky) cgIc_.analyzePattern(A_);
 }
 
 bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force,
@@ -98,16 +239,22 @@ bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const
     // (1) forces at the current state: b = dt f
     f_.setZero(3, n);
     force(x, v, f_);
+    if (used_ == ImplicitSolve::BlockCg) return stepBlockCg(x, v, w, springs, c, dt);
     b_.resize(unknowns);
     for (int i = 0; i < n; ++i)
         if (const int r = index_[static_cast<size_t>(i)]; r >= 0) b_.segment<3>(r) = dt * f_.col(i);
 
-    // (2) A = M - dt D - dt² K (global damping: D_ii = -c I), and b += dt² K v
+    // (2) A = M - dt D - dt² K (global damping: D_ii = -c I), and b += dt² K v, one 3x3 block at a time
     double* A = A_.valuePtr();
     std::fill(A, A + A_.nonZeros(), 0.0);
     for (int i = 0; i < n; ++i)
         if (const int r = index_[static_cast<size_t>(i)]; r >= 0)
             for (int k = 0; k < 3; ++k) A[diag_[static_cast<size_t>(r + k)]] = 1.0 / w[i] + dt * c;
+    // A's block at the offsets o[0..2] (one per column) += sign · B
+    const auto addBlock = [A](const int* o, double sign, const Mat3& B) {
+        if (o[0] < 0) return;
+        for (int col = 0; col < 3; ++col) Eigen::Map<Vec3>(A + o[col]) += sign * B.col(col);
+    };
     Mat3 Kjj, Djj;
     for (size_t k = 0; k < springs.size(); ++k) {
         const Spring& s = springs[k];
@@ -115,31 +262,37 @@ bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const
         if (a < 0 && b < 0) continue;
         springJacobianBlocks(s, x, Kjj, Djj);
         const Mat3 B = -dt * dt * Kjj - dt * Djj;  // block of A at (a, a) and (b, b); −B at (a, b) and (b, a)
-        const std::array<int, 36>& o = blocks_[k];
-        for (int e = 0; e < 9; ++e) {
-            const double value = B(e / 3, e % 3);
-            if (o[e] >= 0) A[o[e]] += value;
-            if (o[9 + e] >= 0) A[o[9 + e]] += value;
-            if (o[18 + e] >= 0) A[o[18 + e]] -= value, A[o[27 + e]] -= value;
-        }
+        const int* o = blocks_[k].data();
+        addBlock(o, 1.0, B);
+        addBlock(o + 3, 1.0, B);
+        addBlock(o + 6, -1.0, B);
+        addBlock(o + 9, -1.0, B);
         const Vec3 Kv = dt * dt * Kjj * (v.col(s.j) - v.col(s.i));  // (K v)_j = Kjj (v_j − v_i), (K v)_i = −(K v)_j
         if (b >= 0) b_.segment<3>(b) += Kv;
         if (a >= 0) b_.segment<3>(a) -= Kv;
     }
 
     // (3) solve A Δv = b: sparse Cholesky (pattern analysed once) or, for large systems, CG
-    if (use_cg_) {
-        cg_.compute(A_);
-        dv_ = cg_.solveWithGuess(b_, dv_);
-        // Not converged within 2n iterations (extremely stiff): the finite iterate is used; should the
-        // motion then grow, runSimulation() reports it as unstable.
-        if ((cg_.info() != Eigen::Success && cg_.info() != Eigen::NoConvergence) || !dv_.allFinite()) return false;
-    } else {
+    iterations_ = 0;
+    if (used_ == ImplicitSolve::Cholesky) {
         ldlt_.factorize(A_);
         if (ldlt_.info() != Eigen::Success) return false;
         dv_ = ldlt_.solve(b_);
         if (ldlt_.info() != Eigen::Success || !dv_.allFinite()) return false;
+    } else {
+        // Not converged within 2n iterations (extremely stiff): the finite iterate is used; should the
+        // motion then grow, runSimulation() reports it as unstable.
+        const auto solve = [&](auto& cg) {
+            cg.factorize(A_);
+            if (cg.preconditioner().info() != Eigen::Success) return false;
+            dv_ = cg.solveWithGuess(b_, dv_);
+            iterations_ = static_cast<int>(cg.iterations());
+            return (cg.info() == Eigen::Success || cg.info() == Eigen::NoConvergence) && dv_.allFinite();
+        };
+        if (!(used_ == ImplicitSolve::CgJacobi ? solve(cgJacobi_) : solve(cgIc_))) return false;
     }
+    const double bNorm = b_.norm();
+    residual_ = bNorm > 0.0 ? (b_ - A_ * dv_).norm() / bNorm : 0.0;
     const VectorX& dv = dv_;
 
     // (4) v += Δv, x += dt v (pinned particles keep their velocity)

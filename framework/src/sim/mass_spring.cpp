@@ -9,6 +9,7 @@
 #include "clothlab/exercise/02_mfn.h"
 #include "clothlab/sim/energy.h"
 #include "clothlab/sim/provot.h"
+#include "clothlab/sim/sweeps.h"
 
 namespace clothlab {
 
@@ -129,6 +130,7 @@ MassSpringSimulation::MassSpringSimulation(const Scene& scene, MassSpringModel m
             term(x, v, out);
         }
     };
+    implicit_.setThreads(sweepThreads(scene.solver.threads));
     integrate_pass_ = timer_.add(std::string("integrate: ") + methodName(scene.solver.method));
     if (scene.provot.enabled && !springs_.empty()) provot_pass_ = timer_.add("provot: strain limit");
     analytic_ = singleSpringAnalytic(scene);
@@ -196,6 +198,10 @@ double MassSpringSimulation::catenaryError() const {
 
 void MassSpringSimulation::addMetrics(std::vector<Metric>& m) const {
     if (catenary_) m.push_back({"catenary_error", catenaryError(), "1"});
+    if (scene_.solver.method == Method::ImplicitEuler) {  // how exactly the last step's linear system was solved
+        m.push_back({"solve_residual", implicit_.residual(), "1"});
+        m.push_back({"solve_iterations", static_cast<double>(implicit_.iterations()), "1"});
+    }
     if (!analytic_) return;
     m.push_back({"error", analyticError(), "m"});
     m.push_back({"max_error", max_error_, "m"});

@@ -15,6 +15,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
     const SolverSpec& sv = scene.solver;
     xpbd_ = sv.method == Method::Xpbd;
     subDt_ = sv.dt / sv.substeps;
+    threads_ = sweepThreads(sv.threads);
     // Lines (1)-(3): x_i, v_i, w_i of every particle (a grid or a mesh, at rest).
     ClothGeometry cloth = makeClothGeometry(scene.cloth);
     static_cast<State&>(P_) = std::move(cloth.state);
@@ -34,10 +35,13 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         // One distance constraint along every mesh edge, in colour order (see colourOrder()).
         std::vector<Eigen::Vector4i> sets;
         for (const auto& e : edges_) sets.emplace_back(e[0], e[1], -1, -1);
+        std::vector<Eigen::Vector4i> ordered;
         for (int k : colourOrder(sets, P_.size())) {
             const auto& e = edges_[static_cast<size_t>(k)];
             links_.push_back({e[0], e[1], (P_.x.col(e[0]) - P_.x.col(e[1])).norm()});
+            ordered.push_back(sets[static_cast<size_t>(k)]);
         }
+        linkPlan_ = sweepPlan(ordered, P_.size(), threads_);  // the colour groups, swept in parallel
         linkLambda_.assign(links_.size(), 0.0);
         if (!xpbd_) kDistance_ = iterationStiffness(scene.constraints.distance.stiffness, sv.iterations);
     }
@@ -46,13 +50,18 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         const std::vector<BendingStencil> stencils = bendingStencils(triangles_, P_.x);
         std::vector<Eigen::Vector4i> sets;
         for (const auto& b : stencils) sets.emplace_back(b.i1, b.i2, b.i3, b.i4);
-        for (int k : colourOrder(sets, P_.size())) stencils_.push_back(stencils[static_cast<size_t>(k)]);
+        std::vector<Eigen::Vector4i> ordered;
+        for (int k : colourOrder(sets, P_.size())) {
+            stencils_.push_back(stencils[static_cast<size_t>(k)]);
+            ordered.push_back(sets[static_cast<size_t>(k)]);
+        }
+        stencilPlan_ = sweepPlan(ordered, P_.size(), threads_);
         bendLambda_.assign(stencils_.size(), 0.0);
         if (!xpbd_) kBending_ = iterationStiffness(scene.constraints.bending.stiffness, sv.iterations);
         if (xpbd_ && sv.bendingKernel != "exercise")
             throw InputError(scene.file, "solver.bending_kernel",
                              "\"" + sv.bendingKernel + "\" works with method \"pbd\" only (xpbd uses \"exercise\")");
-        if (!xpbd_) bendingSweep_ = makeBendingSweep(sv.bendingKernel, stencils_);
+        if (!xpbd_) bendingSweep_ = makeBendingSweep(sv.bendingKernel, stencils_, stencilPlan_);
     }
     if (!scene.colliders.empty()) {
         generatePass_ = timer_.add("collisions: generate");
@@ -154,17 +163,17 @@ void PbdSimulation::projectConstraints(Matrix3X& p) {
     const double dt2 = subDt_ * subDt_;
     if (distancePass_ >= 0) {
         auto timed = timer_.time(distancePass_);
-        if (xpbd_) projectDistanceSweepXpbd(links_, w, scene_.constraints.distance.compliance / dt2, linkLambda_, p);
-        else projectDistanceSweep(links_, w, kDistance_, p);
+        if (xpbd_) projectDistanceSweepXpbd(links_, w, scene_.constraints.distance.compliance / dt2, linkLambda_, p, linkPlan_);
+        else projectDistanceSweep(links_, w, kDistance_, p, linkPlan_);
     }
     if (bendingPass_ >= 0) {
         auto timed = timer_.time(bendingPass_);
-        if (xpbd_) projectBendingSweepXpbd(stencils_, w, scene_.constraints.bending.compliance / dt2, bendLambda_, p);
+        if (xpbd_) projectBendingSweepXpbd(stencils_, w, scene_.constraints.bending.compliance / dt2, bendLambda_, p, stencilPlan_);
         else bendingSweep_(w, kBending_, p);
     }
     if (collisionPass_ >= 0) {
         auto timed = timer_.time(collisionPass_);
-        projectCollisionSweep(contacts_, w, scene_.solver.thickness, p);
+        projectCollisionSweep(contacts_, w, scene_.solver.thickness, p, threads_);
     }
     if (selfPass_ >= 0) {
         auto timed = timer_.time(selfPass_);

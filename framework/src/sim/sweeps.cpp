@@ -1,5 +1,9 @@
 #include "clothlab/sim/sweeps.h"
 
+#include <omp.h>
+
+#include <exception>
+
 #include "clothlab/exercise/04_distance.h"
 #include "clothlab/sim/xpbd.h"
 
@@ -12,46 +16,118 @@ void addCorrection(const BendingStencil& s, const BendingCorrection& c, Matrix3X
     p.col(s.i3) += c.dp3;
     p.col(s.i4) += c.dp4;
 }
+
+/// Runs f; an exception it throws (a stub's "not implemented", say) is kept in `error` (the first one).
+template <class F>
+void rethrowLater(const F& f, std::exception_ptr& error) {
+    try {
+        f();
+    } catch (...) {
+#pragma omp critical(clothlab_sweep_error)
+        if (!error) error = std::current_exception();
+    }
+}
+
+/// Calls project(n) for the constraints n = 0 .. count − 1: group after group, the constraints of
+/// one group in parallel (they share no particle, so the order within a group does not matter).
+template <class Project>
+void forEachConstraint(size_t count, const SweepPlan& plan, const Project& project) {
+    if (plan.groups.empty()) {  // no plan: one group, serial
+        for (size_t n = 0; n < count; ++n) project(static_cast<int>(n));
+        return;
+    }
+    for (size_t g = 0; g + 1 < plan.groups.size(); ++g) {
+        const int first = plan.groups[g], last = plan.groups[g + 1];
+        std::exception_ptr error;  // an exception must not leave a parallel loop: rethrown after it
+#pragma omp parallel for num_threads(plan.threads) if (plan.threads > 1)
+        for (int n = first; n < last; ++n) rethrowLater([&] { project(n); }, error);
+        if (error) std::rethrow_exception(error);
+    }
+}
 }  // namespace
 
-void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p) {
-    for (const DistanceLink& L : links) {
+SweepPlan sweepPlan(const std::vector<Eigen::Vector4i>& particles, int nParticles, int threads) {
+    SweepPlan plan;
+    plan.threads = threads;
+    std::vector<int> groupOf(static_cast<size_t>(nParticles), -1);  // the last group that touched each particle
+    for (size_t k = 0; k < particles.size(); ++k) {
+        bool shares = plan.groups.empty();
+        for (int a = 0; a < 4; ++a)
+            if (const int i = particles[k][a]; i >= 0)
+                shares = shares || groupOf[static_cast<size_t>(i)] == static_cast<int>(plan.groups.size()) - 1;
+        if (shares) plan.groups.push_back(static_cast<int>(k));  // k starts a new group
+        for (int a = 0; a < 4; ++a)
+            if (const int i = particles[k][a]; i >= 0) groupOf[static_cast<size_t>(i)] = static_cast<int>(plan.groups.size()) - 1;
+    }
+    plan.groups.push_back(static_cast<int>(particles.size()));
+    return plan;
+}
+
+int sweepThreads(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
+
+void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p,
+                          const SweepPlan& plan) {
+    forEachConstraint(links.size(), plan, [&](int n) {
+        const DistanceLink& L = links[static_cast<size_t>(n)];
         const DistanceCorrection c = projectDistanceConstraint(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, k);
         p.col(L.i) += c.dp1;
         p.col(L.j) += c.dp2;
-    }
+    });
 }
 
-void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p) {
-    for (const BendingStencil& s : stencils) {
+void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p,
+                         const SweepPlan& plan) {
+    forEachConstraint(stencils.size(), plan, [&](int n) {
+        const BendingStencil& s = stencils[static_cast<size_t>(n)];
         addCorrection(s, projectBendingConstraint(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1], w[s.i2],
                                                   w[s.i3], w[s.i4], s.phi0, k),
                       p);
-    }
+    });
 }
 
 void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const VectorX& w, double alphaTilde,
-                              std::vector<double>& lambda, Matrix3X& p) {
-    for (size_t k = 0; k < links.size(); ++k) {
-        const DistanceLink& L = links[k];
-        const DistanceCorrection c = projectDistanceXpbd(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, alphaTilde, lambda[k]);
+                              std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
+    forEachConstraint(links.size(), plan, [&](int n) {
+        const DistanceLink& L = links[static_cast<size_t>(n)];
+        const DistanceCorrection c = projectDistanceXpbd(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d, alphaTilde,
+                                                         lambda[static_cast<size_t>(n)]);
         p.col(L.i) += c.dp1;
         p.col(L.j) += c.dp2;
-    }
+    });
 }
 
 void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
-                             std::vector<double>& lambda, Matrix3X& p) {
-    for (size_t k = 0; k < stencils.size(); ++k) {
-        const BendingStencil& s = stencils[k];
+                             std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
+    forEachConstraint(stencils.size(), plan, [&](int n) {
+        const BendingStencil& s = stencils[static_cast<size_t>(n)];
         addCorrection(s, projectBendingXpbd(p.col(s.i1), p.col(s.i2), p.col(s.i3), p.col(s.i4), w[s.i1], w[s.i2],
-                                            w[s.i3], w[s.i4], s.phi0, alphaTilde, lambda[k]),
+                                            w[s.i3], w[s.i4], s.phi0, alphaTilde, lambda[static_cast<size_t>(n)]),
                       p);
-    }
+    });
 }
 
-void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p) {
-    for (const CollisionConstraint& c : contacts) p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
+void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p,
+                           int threads) {
+    // Runs of contacts of one particle: run r is contacts start[r] .. start[r+1] − 1.
+    std::vector<int> start;
+    bool increasing = true;  // each particle's contacts consecutive, particles increasing along the list
+    for (size_t k = 0; k < contacts.size(); ++k) {
+        if (k > 0 && contacts[k].i == contacts[k - 1].i) continue;
+        increasing = increasing && (k == 0 || contacts[k].i > contacts[k - 1].i);
+        start.push_back(static_cast<int>(k));
+    }
+    start.push_back(static_cast<int>(contacts.size()));
+    const int runs = static_cast<int>(start.size()) - 1;
+    std::exception_ptr error;
+#pragma omp parallel for num_threads(threads) if (threads > 1 && increasing)
+    for (int r = 0; r < runs; ++r)
+        rethrowLater([&] {
+            for (int k = start[static_cast<size_t>(r)]; k < start[static_cast<size_t>(r) + 1]; ++k) {
+                const CollisionConstraint& c = contacts[static_cast<size_t>(k)];
+                p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
+            }
+        }, error);
+    if (error) std::rethrow_exception(error);
 }
 
 void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,

@@ -10,7 +10,7 @@ DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1
     const Vec3 n = distanceGradient(p1, p2);  // ∇_{p1} C; zero when the points coincide
     const double denom = w1 + w2 + alphaTilde;
     if (n.squaredNorm() == 0.0 || w1 + w2 <= 0.0 || denom <= 0.0) return {Vec3::Zero(), Vec3::Zero()};
-    const double C = distanceConstraint(p1, p2, d);
+    const double C = n.dot(p1 - p2) - d;  // |p1 − p2| = n·(p1 − p2): no second square root
     const double dl = (-C - alphaTilde * lambda) / denom;
     lambda += dl;
     return {w1 * dl * n, -w2 * dl * n};
@@ -19,6 +19,12 @@ DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1
 double bendingAngle(const BendingGradients& g) {
     if (!g.valid) return M_PI;
     return std::atan2(g.sinPhi, g.d);
+}
+
+double dihedralAngle(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+    const Vec3 a = p2 - p1, b = p3 - p1, c = p4 - p1;
+    // (a × b) × (a × c) = a (a · (b × c)): its length is |a| |a · (b × c)|
+    return std::atan2(a.norm() * std::fabs(a.dot(b.cross(c))), a.cross(b).dot(a.cross(c)));
 }
 
 BendingCorrection projectBendingXpbd(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4, double w1,
@@ -32,7 +38,7 @@ BendingCorrection projectBendingXpbd(const Vec3& p1, const Vec3& p2, const Vec3&
     for (const auto& [dp, w] : parts)
         if (w > 0.0) sum += dp->squaredNorm() / w;
     if (!(sum > 0.0)) return {};  // no correction: degenerate stencil, all pinned, or exactly at rest (C = 0)
-    const double C = bendingAngle(bendingGradients(p1, p2, p3, p4)) - phi0;  // the constraint, C = φ − φ0
+    const double C = dihedralAngle(p1, p2, p3, p4) - phi0;  // the constraint, C = φ − φ0
     const double S = C * C / sum;
     const double dl = (-C - alphaTilde * lambda) / (S + alphaTilde);
     lambda += dl;

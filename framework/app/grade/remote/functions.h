@@ -47,6 +47,12 @@
     X(905, projectCollisionSweep)                                                                      \
     X(906, projectSelfCollisionSweep)
 
+namespace clothlab {
+/// The plan a sweep runs with in the submission's process: serial (its sandbox allows no threads;
+/// the colour groups give the same positions bit for bit either way).
+inline SweepPlan serialPlan(const SweepPlan& plan) { return {plan.groups, 1}; }
+}  // namespace clothlab
+
 namespace clothlab::remote {
 #define CLOTHLAB_REMOTE_ID(id, name) k_##name = id,
 enum Function : uint32_t { CLOTHLAB_REMOTE_FUNCTIONS(CLOTHLAB_REMOTE_ID) };

@@ -42,9 +42,9 @@ void velocityUpdate(Matrix3X& v, const std::vector<CollisionConstraint>& contact
 
 // The framework's sweeps over this stage's constraints, sent whole (remote/functions.h: 901–905).
 
-void wrappedCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p) __asm__("__wrap__ZN8clothlab21projectCollisionSweepERKSt6vectorINS_19CollisionConstraintESaIS1_EERKN5Eigen6MatrixIdLin1ELi1ELi0ELin1ELi1EEEdRNS7_IdLi3ELin1ELi0ELi3ELin1EEE");
-void wrappedCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p) {
-    Invoke<decltype(projectCollisionSweep)>::call(submissionProcess(), remote::k_projectCollisionSweep, "projectCollisionSweep", contacts, w, h, p);
+void wrappedCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p, int) __asm__("__wrap__ZN8clothlab21projectCollisionSweepERKSt6vectorINS_19CollisionConstraintESaIS1_EERKN5Eigen6MatrixIdLin1ELi1ELi0ELin1ELi1EEEdRNS7_IdLi3ELin1ELi0ELi3ELin1EEEi");
+void wrappedCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p, int) {
+    Invoke<decltype(projectCollisionSweep)>::call(submissionProcess(), remote::k_projectCollisionSweep, "projectCollisionSweep", contacts, w, h, p, 1);  // serial: the sandbox makes no threads
 }
 
 }  // namespace clothlab

@@ -85,6 +85,7 @@ template <class F> void fields(F& f, BendingGradients& g) { f(g.d, g.sinPhi, g.q
 template <class F> void fields(F& f, BendingCorrection& c) { f(c.dp1, c.dp2, c.dp3, c.dp4); }
 template <class F> void fields(F& f, BendingStencil& s) { f(s.i1, s.i2, s.i3, s.i4, s.phi0); }
 template <class F> void fields(F& f, DistanceLink& l) { f(l.i, l.j, l.d); }
+template <class F> void fields(F& f, SweepPlan& s) { f(s.groups, s.threads); }
 template <class F> void fields(F& f, CollisionConstraint& c) {
     f(c.i, c.q, c.n, c.start, c.vnBefore, c.friction, c.restitution);
 }

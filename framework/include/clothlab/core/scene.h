@@ -194,6 +194,7 @@ struct SolverSpec {
     /// PBD bending sweep: "exercise" calls exercise 5.2 per stencil (the student's or the reference
     /// code); any other name is a sweep registered with registerBendingSweep() (sim/extensions.h)
     std::string bendingKernel = "exercise";
+    int threads = 0;        ///< threads that sweep a colour group / compute forces (0: all cores, 1: serial)
 };
 
 /// What the run report prints.

@@ -14,6 +14,18 @@
 
 namespace clothlab {
 
+/// Triangles with optional per-vertex normals, as OpenGL vertex arrays take them.
+struct TriangleList {
+    std::vector<float> xyz;        ///< positions, 3 floats per vertex, m
+    std::vector<float> nrm;        ///< per-vertex normals, 3 floats per vertex (empty: none, e.g. unlit)
+    std::vector<unsigned> idx;     ///< 3 vertex indices per triangle
+};
+
+/// Draws a triangle list in one call (glDrawElements on vertex arrays) with the current GL state
+/// (material, lighting, colour, matrices). Cloth, shadows and colliders all go through it.
+/// @param t  the triangles
+void drawTriangleList(const TriangleList& t);
+
 /// What to draw and how.
 struct RenderOptions {
     bool surface = true;          ///< the cloth surface (lit, two-sided: front warm, back cool)
@@ -46,10 +58,13 @@ private:
     void drawSurface(const DrawData& d, double scale);
     void drawEdges(const DrawData& d, const RenderOptions& opt, double scale);
     void drawParticles(const DrawData& d, const RenderOptions& opt, double scale);
+    /// The cloth's triangles as indices into its particles (3 per triangle).
+    static void triangleIndices(const DrawData& d, std::vector<unsigned>& idx);
+
     unsigned texture_ = 0;        ///< checker texture of the cloth (0: not created yet)
-    std::vector<float> buf_;      ///< scratch vertex data
-    std::vector<float> nrm_;      ///< scratch normals
-    std::vector<unsigned> idx_;   ///< scratch indices
+    TriangleList scratch_;        ///< the cloth or its shadow, rebuilt every frame
+    std::vector<float> lines_;    ///< scratch: line or point vertices, 3 floats each
+    std::vector<float> colours_;  ///< scratch: a colour per line vertex, RGB
     Vec3 right_{1, 0, 0};         ///< camera right axis (for markers facing the camera)
     Vec3 up_{0, 1, 0};            ///< camera up axis
 };

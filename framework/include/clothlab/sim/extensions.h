@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "clothlab/exercise/05_bending.h"
+#include "clothlab/sim/sweeps.h"
 
 namespace clothlab {
 
@@ -20,9 +21,10 @@ namespace clothlab {
 /// and the per-iteration stiffness k' in [0, 1].
 using BendingSweep = std::function<void(const VectorX& w, double k, Matrix3X& p)>;
 
-/// Makes a sweep for the given stencils, projected in the given order (it may precompute
-/// whatever it needs from them once).
-using BendingSweepFactory = std::function<BendingSweep(const std::vector<BendingStencil>& stencils)>;
+/// Makes a sweep for the given stencils, projected in the given order, with their colour groups and
+/// threads (it may precompute whatever it needs from them once). The result must not depend on the
+/// number of threads.
+using BendingSweepFactory = std::function<BendingSweep(const std::vector<BendingStencil>& stencils, const SweepPlan& plan)>;
 
 /// Registers a sweep under `name` (call once, e.g. from a static initialiser of the kernel's file).
 /// @param name  the value of `solver.bending_kernel` that selects it; not "exercise"
@@ -33,7 +35,11 @@ void registerBendingSweep(const std::string& name, BendingSweepFactory make);
 std::vector<std::string> bendingSweepNames();
 
 /// The sweep called `name` over `stencils`: "exercise" gives projectBendingSweep() over them.
+/// @param name      "exercise" or a registered name
+/// @param stencils  the stencils in projection order
+/// @param plan      their colour groups (sweepPlan()) and the threads
+/// @return          the sweep
 /// @throws std::out_of_range for a name nobody registered (scene loading rejects those first)
-BendingSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils);
+BendingSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils, const SweepPlan& plan);
 
 }  // namespace clothlab

@@ -13,9 +13,9 @@
 #include <array>
 #include <vector>
 
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
-#include <Eigen/IterativeLinearSolvers>
 
 #include "clothlab/core/spring.h"
 #include "clothlab/exercise/01_hooke.h"
@@ -52,18 +52,34 @@ void springJacobianBlocks(const Spring& s, const Matrix3X& x, Eigen::Matrix3d& K
 void addSpringJacobians(const std::vector<Spring>& springs, const Matrix3X& x, const std::vector<int>& index,
                         std::vector<Eigen::Triplet<double>>& K, std::vector<Eigen::Triplet<double>>& D);
 
+/// How ImplicitEulerSolver solves its linear system A Δv = b.
+enum class ImplicitSolve {
+    Auto,                  ///< Cholesky up to 1500 unknowns, above BlockCg (the default)
+    Cholesky,              ///< sparse LDLᵀ (Eigen::SimplicialLDLT), pattern analysed once, factorised every step
+    CgJacobi,              ///< conjugate gradients, diagonal preconditioner, relative residual 10⁻¹⁰ (the solver before issue 14)
+    CgIncompleteCholesky,  ///< conjugate gradients (Eigen), incomplete Cholesky preconditioner, relative residual 10⁻⁴
+    /// Conjugate gradients on the 3x3 spring blocks without an assembled matrix: (A x)_i =
+    /// (m_i + Δt c) x_i + Σ_s B_s (x_i − x_j) per particle, block-Jacobi preconditioner (the inverse
+    /// 3x3 diagonal blocks), relative residual 10⁻⁴; particles in parallel (solver.threads), the
+    /// same bits on any number of threads.
+    BlockCg,
+};
+
 /// The linearised backward Euler stepper; keeps the factorisation's symbolic analysis between steps.
 class ImplicitEulerSolver {
 public:
     /// One step (formula in the file comment). Pinned particles (w = 0) keep their velocity and are
     /// left out of the system. The forces f(x, v) come from `force` (all force passes of the scene);
     /// the Jacobian from the springs and the global damping c (\f$ \partial f_i/\partial v_i \mathrel{+}= -c I \f$).
-    /// The system matrix is symmetric positive definite. Up to 1500 unknowns (500 free particles) it is
-    /// solved by a sparse Cholesky factorisation (Eigen::SimplicialLDLT: exact, robust for extreme
-    /// stiffness and mass ratios); above, where the factor fills in and costs seconds per step, by
-    /// conjugate gradients with a diagonal (Jacobi) preconditioner, relative residual 10⁻¹⁰, started
-    /// from the previous step's Δv (if it does not converge within 2·unknowns iterations, the finite
-    /// iterate is used). The sparsity pattern is rebuilt when particles are pinned or released.
+    /// The system matrix is symmetric positive definite, assembled in 3x3 blocks. Up to 1500 unknowns
+    /// (500 free particles) it is solved by a sparse Cholesky factorisation (Eigen::SimplicialLDLT:
+    /// exact, robust for extreme stiffness and mass ratios; pattern analysed once); above, where the
+    /// factor fills in and costs seconds per step, by conjugate gradients on the 3x3 blocks of the
+    /// springs (ImplicitSolve::BlockCg), started from the previous step's Δv, until the relative
+    /// residual \f$ |b - A\Delta v|/|b| \f$ is below 10⁻⁴. That is far below the step's own error: one
+    /// linearised (Newton) step of a first-order method. If it does not converge within 2·unknowns
+    /// iterations, the finite iterate is used.
+    /// The sparsity pattern is rebuilt when particles are pinned or released.
     /// @param x, v     positions (m) and velocities (m/s), 3 x N (updated in place)
     /// @param w        inverse masses, N, 1/kg
     /// @param force    the force field F(x, v), N
@@ -74,25 +90,58 @@ public:
     bool step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, const std::vector<Spring>& springs,
               double c, double dt);
 
+    /// Chooses the linear solver (for benchmarks and tests; the default is ImplicitSolve::Auto).
+    /// @param how  the solver of the following steps
+    void setSolve(ImplicitSolve how) {
+        solve_ = how;
+        index_.clear();  // rebuild the pattern and the solver at the next step
+    }
+    /// Threads of the block solver (solver.threads resolved, ≥ 1).
+    /// @param threads  ≥ 1
+    void setThreads(int threads) { threads_ = threads; }
+    /// The relative residual \f$ |b - A\Delta v|_2 / |b|_2 \f$ of the last step's solve (0 before the first).
+    double residual() const { return residual_; }
+    /// Conjugate-gradient iterations of the last step's solve (0 for Cholesky).
+    int iterations() const { return iterations_; }
+
 private:
     /// Builds the sparsity pattern of A (mass diagonal + one 3x3 block per spring end pair) and the
-    /// offsets of every block entry in A's value array, then analyses the pattern.
+    /// offsets of every block column in A's value array, then analyses the pattern.
     void buildPattern(const VectorX& w, const std::vector<Spring>& springs);
     /// Offset of entry (r, c) in A_'s value array.
     int offset(int r, int c);
+    /// Per particle the list of its springs, and the per-spring storage of BlockCg.
+    void buildBlocks(const VectorX& w, const std::vector<Spring>& springs);
+    /// y = A x with A from the spring blocks B_ (BlockCg); x, y 3 x N, zero at pinned particles.
+    void applyA(const std::vector<Spring>& springs, const VectorX& w, double mDiag, const Matrix3X& x, Matrix3X& y) const;
+    /// Steps (2)–(4) of step() with BlockCg; f_ holds the forces.
+    bool stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w, const std::vector<Spring>& springs, double c, double dt);
 
     std::vector<int> index_;                   ///< particle → first unknown, −1 if pinned
     std::vector<int> diag_;                    ///< per unknown: offset of its diagonal entry in A_
-    std::vector<std::array<int, 36>> blocks_;  ///< per spring: offsets of its (a,a), (b,b), (a,b), (b,a) blocks, −1 if absent
+    /// Per spring: for its blocks (a,a), (b,b), (a,b), (b,a) and each of their 3 columns, the offset
+    /// of the column's first entry (the 3 entries of a block column are consecutive); −1 if absent.
+    std::vector<std::array<int, 12>> blocks_;
     size_t pattern_springs_ = 0;               ///< number of springs the pattern was built for
     SparseMatrix A_;                           ///< the system matrix
     Eigen::SimplicialLDLT<SparseMatrix> ldlt_; ///< its factorisation (small systems)
-    /// Conjugate gradients for large systems.
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg_;
-    bool use_cg_ = false;                      ///< more than 1500 unknowns
+    /// Conjugate gradients with a diagonal preconditioner (ImplicitSolve::CgJacobi).
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cgJacobi_;
+    /// Conjugate gradients with an incomplete Cholesky preconditioner (large systems).
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cgIc_;
+    ImplicitSolve solve_ = ImplicitSolve::Auto; ///< as chosen
+    ImplicitSolve used_ = ImplicitSolve::Cholesky; ///< what Auto resolved to for this pattern
     VectorX dv_;                               ///< Δv of the last step (CG's initial guess)
     Matrix3X f_;                               ///< forces at the start of the step
     VectorX b_;                                ///< right-hand side
+    double residual_ = 0.0;                    ///< relative residual of the last solve
+    int threads_ = 1;                          ///< threads of BlockCg
+    std::vector<int> adjStart_, adj_;          ///< BlockCg: springs of particle i are adj_[adjStart_[i] .. adjStart_[i+1] − 1]
+    std::vector<Eigen::Matrix3d> B_;           ///< BlockCg: per spring −Δt² K_jj − Δt D_jj
+    std::vector<Vec3> Kv_;                     ///< BlockCg: per spring Δt² K_jj (v_j − v_i)
+    std::vector<Eigen::Matrix3d> Dinv_;        ///< BlockCg: per particle the inverse diagonal block of A
+    Matrix3X bBlock_, dvBlock_;                ///< BlockCg: right-hand side and Δv, 3 x N (zero at pinned particles)
+    int iterations_ = 0;                       ///< CG iterations of the last solve
 };
 
 }  // namespace clothlab

@@ -77,10 +77,14 @@ public:
     /// −1 for any other scene.
     double catenaryError() const;
 
+    /// The implicit Euler stepper (method implicit_euler), e.g. to choose its linear solver.
+    ImplicitEulerSolver& implicitSolver() { return implicit_; }
+
 protected:
     double elasticEnergy() const override;
     /// error and max_error against the analytic solution, when the scene has one; catenary_error for a
-    /// chain between two anchors.
+    /// chain between two anchors; with implicit Euler solve_residual (|b − A Δv|/|b| of the last step)
+    /// and solve_iterations (CG, 0 for Cholesky).
     void addMetrics(std::vector<Metric>& m) const override;
 
 private:

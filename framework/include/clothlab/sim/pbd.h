@@ -56,6 +56,10 @@ public:
     const std::vector<DistanceLink>& distanceLinks() const { return links_; }
     /// The bending stencils (empty unless constraints.bending is enabled), in projection order.
     const std::vector<BendingStencil>& bendingStencilList() const { return stencils_; }
+    /// The colour groups of distanceLinks() and the threads that sweep them.
+    const SweepPlan& distancePlan() const { return linkPlan_; }
+    /// The colour groups of bendingStencilList() and the threads that sweep them.
+    const SweepPlan& bendingPlan() const { return stencilPlan_; }
 
 protected:
     /// rms_bending_error (with bending constraints), max_penetration (with colliders) and
@@ -77,6 +81,8 @@ private:
     PbdCallbacks callbacks_;                 ///< what pbdStep() calls, built once from the scene
     bool xpbd_ = false;                      ///< XPBD instead of PBD
     double subDt_ = 0.0;                     ///< Δt / substeps, s
+    int threads_ = 1;                        ///< threads per colour group (solver.threads, 0 resolved)
+    SweepPlan linkPlan_, stencilPlan_;       ///< colour groups of links_ and stencils_
     std::vector<DistanceLink> links_;        ///< distance constraints
     std::vector<BendingStencil> stencils_;   ///< bending constraints
     BendingSweep bendingSweep_;              ///< PBD bending sweep over stencils_ (extensions.h)

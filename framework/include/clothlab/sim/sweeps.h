@@ -6,6 +6,12 @@
 /// projection (Gauss–Seidel). The projections are the stage functions (the student's or the
 /// reference code): exercise 4.3 (distance), 5.2 (bending), 6.3 (collision), 7.5 and 7.6
 /// (self-collision), or their XPBD forms in xpbd.h.
+///
+/// Two cores: the solver orders its constraints by colour (colourOrder()), so that the constraints
+/// of one colour group share no particle. Projecting them in any order, or at the same time, gives
+/// the same positions bit for bit; each sweep runs one group after the other and the constraints of
+/// a group in parallel (`#pragma omp parallel for`, OpenMP, see docs/performance.md). With
+/// SweepPlan::threads = 1 it is the plain serial loop.
 #pragma once
 #include <vector>
 
@@ -22,13 +28,40 @@ struct DistanceLink {
     double d = 0.0;   ///< rest length, m
 };
 
+/// How a sweep runs: the colour groups of its constraint list and the number of threads.
+struct SweepPlan {
+    /// Group g holds the constraints groups[g] .. groups[g+1] − 1 (groups[0] = 0, the last entry is
+    /// the number of constraints); no two constraints of one group share a particle. Empty (the
+    /// default): the whole list is one group, swept serially in its order.
+    std::vector<int> groups;
+    int threads = 1;  ///< threads that sweep one group (1: serial, the exact teaching run)
+};
+
+/// The groups of a constraint list: maximal runs of consecutive constraints of which no two share a
+/// particle (a constraint that shares a particle with the current group starts the next one). For a
+/// list in colourOrder() these are exactly its colour groups: first-fit gave a constraint colour
+/// c + 1 only because it shares a particle with one of colour c.
+/// @param particles   the particles of each constraint in sweep order (−1: unused slot)
+/// @param nParticles  number of particles N (indices are below it)
+/// @param threads     threads per group, ≥ 1
+/// @return            the plan
+SweepPlan sweepPlan(const std::vector<Eigen::Vector4i>& particles, int nParticles, int threads);
+
+/// The number of threads for `solver.threads`: the value itself if ≥ 1, else (0) all cores
+/// (OpenMP's omp_get_max_threads(), which follows OMP_NUM_THREADS).
+/// @param requested  solver.threads, ≥ 0
+/// @return           ≥ 1
+int sweepThreads(int requested);
+
 /// PBD distance sweep: for every link, \f$ \vec p_i \mathrel{+}= \Delta\vec p_1,\ \vec p_j \mathrel{+}= \Delta\vec p_2 \f$
 /// with the corrections of projectDistanceConstraint() (exercise 4.3).
 /// @param links  the constraints, in the order they are projected
 /// @param w      inverse masses, length N, 1/kg
 /// @param k      per-iteration stiffness k' in [0, 1]
 /// @param p      predicted positions, 3 x N, m (updated in place)
-void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p);
+/// @param plan   colour groups of links and threads (default: serial, in the given order)
+void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p,
+                          const SweepPlan& plan = {});
 
 /// PBD bending sweep: for every stencil, \f$ \vec p_{i_m} \mathrel{+}= \Delta\vec p_m \f$ (m = 1..4) with the
 /// corrections of projectBendingConstraint() (exercise 5.2).
@@ -36,7 +69,9 @@ void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX&
 /// @param w         inverse masses, length N, 1/kg
 /// @param k         per-iteration stiffness k' in [0, 1]
 /// @param p         predicted positions, 3 x N, m (updated in place)
-void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p);
+/// @param plan      colour groups of stencils and threads
+void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p,
+                         const SweepPlan& plan = {});
 
 /// XPBD distance sweep: projectDistanceXpbd() for every link, \f$ \tilde\alpha = \alpha/\Delta t^2 \f$.
 /// @param links       the constraints, in the order they are projected
@@ -44,8 +79,9 @@ void projectBendingSweep(const std::vector<BendingStencil>& stencils, const Vect
 /// @param alphaTilde  compliance over the squared (sub)step, α/Δt², kg⁻¹
 /// @param lambda      one multiplier λ per link (kg m), updated; zero at the start of every (sub)step
 /// @param p           predicted positions, 3 x N, m (updated in place)
+/// @param plan        colour groups of links and threads
 void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const VectorX& w, double alphaTilde,
-                              std::vector<double>& lambda, Matrix3X& p);
+                              std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan = {});
 
 /// XPBD bending sweep: projectBendingXpbd() for every stencil, \f$ \tilde\alpha = \alpha/\Delta t^2 \f$.
 /// @param stencils    the constraints, in the order they are projected
@@ -53,16 +89,22 @@ void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const Vect
 /// @param alphaTilde  compliance of the angle over the squared (sub)step, α/Δt²
 /// @param lambda      one multiplier λ per stencil, updated; zero at the start of every (sub)step
 /// @param p           predicted positions, 3 x N, m (updated in place)
+/// @param plan        colour groups of stencils and threads
 void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
-                             std::vector<double>& lambda, Matrix3X& p);
+                             std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan = {});
 
 /// Collision sweep: \f$ \vec p_i \mathrel{+}= \f$ projectCollisionConstraint() (exercise 6.3) for every
-/// collision constraint of this step.
+/// collision constraint of this step. The contacts of one particle are projected one after the
+/// other in their order; different particles in parallel, when the contacts of each particle are
+/// consecutive and the particles increase along the list (the order line (8) makes them in),
+/// else serially.
 /// @param contacts  the collision constraints made by line (8) in this step
 /// @param w         inverse masses, length N, 1/kg
 /// @param h         collision thickness h, m
 /// @param p         predicted positions, 3 x N, m (updated in place)
-void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p);
+/// @param threads   threads, ≥ 1 (1: serial)
+void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p,
+                           int threads = 1);
 
 /// Self-collision sweep: for every pair (i, j) with separation distance d (a DistanceLink read as the
 /// inequality |p_i − p_j| ≥ d): the separation of projectSeparation() (exercise 7.5), then, with μ > 0,

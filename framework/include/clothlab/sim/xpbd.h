@@ -30,6 +30,16 @@ DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1
 /// @return   φ in [0, π], rad
 double bendingAngle(const BendingGradients& g);
 
+/// The dihedral angle of a stencil straight from its positions, without the q-vectors: with
+/// \f$\vec a=\vec p_2-\vec p_1\f$, \f$\vec b=\vec p_3-\vec p_1\f$, \f$\vec c=\vec p_4-\vec p_1\f$ the normals are
+/// \f$\vec a\times\vec b\f$ and \f$\vec a\times\vec c\f$, and since \f$(\vec a\times\vec b)\times(\vec a\times\vec c)
+/// = \vec a\,(\vec a\cdot(\vec b\times\vec c))\f$,
+/// \f[ \varphi = \operatorname{atan2}\big(|\vec a|\,|\vec a\cdot(\vec b\times\vec c)|,\ (\vec a\times\vec b)\cdot(\vec a\times\vec c)\big), \f]
+/// the angle bendingAngle() gives for a valid stencil (atan2 does not care for the scale of its arguments).
+/// @param p1, p2, p3, p4  positions as in bendingGradients(), m
+/// @return                φ in [0, π], rad (π for a flat stencil; meaningless for a zero-area triangle)
+double dihedralAngle(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4);
+
 /// One XPBD projection of the bending constraint C = φ − φ0, built on exercise 5.2: the PBD
 /// correction with k = 1 is \f$ \Delta\vec p_i^{PBD} = -(C/S)\,w_i\nabla_i C \f$ with
 /// \f$ S = \sum_j w_j|\nabla_j C|^2 = C^2 / \sum_i |\Delta\vec p_i^{PBD}|^2/w_i \f$, so that
