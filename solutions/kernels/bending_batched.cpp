@@ -16,6 +16,8 @@
 //   fused multiply-adds where the CPU has them, so the last digits depend on the CPU.
 #include "bending_batched.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -218,10 +220,17 @@ bool bendingBlocksUseScatter() {
 
 void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, BendingLoop loop) {
     const auto sweep = loop == BendingLoop::Best && bendingBlocksUseScatter() ? sweepDirect : sweepStaged;
+    if (blocks.threads <= 1) {  // serial: the blocks in order
+        sweep(BlockArrays(blocks, 0, static_cast<int>(blocks.start.size()) - 1), w.data(), k, p.data());
+        return;
+    }
     for (size_t g = 0; g + 1 < blocks.groups.size(); ++g) {
         const int first = blocks.groups[g], last = blocks.groups[g + 1];
-#pragma omp parallel for num_threads(blocks.threads) if (blocks.threads > 1)
-        for (int b = first; b < last; ++b) sweep(BlockArrays(blocks, b, b + 1), w.data(), k, p.data());
+#pragma omp parallel num_threads(blocks.threads)
+        {  // each thread one contiguous share of the group's blocks
+            const int t = omp_get_thread_num(), threads = omp_get_num_threads(), size = last - first;
+            sweep(BlockArrays(blocks, first + size * t / threads, first + size * (t + 1) / threads), w.data(), k, p.data());
+        }
     }
 }
 

@@ -69,36 +69,41 @@ int ImplicitEulerSolver::offset(int r, int c) { return static_cast<int>(&A_.coef
 
 void ImplicitEulerSolver::buildBlocks(const VectorX& w, const std::vector<Spring>& springs) {
     const int n = static_cast<int>(w.size());
-    // Per particle the springs it belongs to (CSR): springs of particle i are adj_[adjStart_[i] .. adjStart_[i+1] − 1].
+    // Per particle the springs it belongs to and their other ends (CSR): entries adjStart_[i] .. adjStart_[i+1] − 1.
     adjStart_.assign(static_cast<size_t>(n) + 1, 0);
     for (const Spring& s : springs) ++adjStart_[static_cast<size_t>(s.i) + 1], ++adjStart_[static_cast<size_t>(s.j) + 1];
     for (int i = 0; i < n; ++i) adjStart_[static_cast<size_t>(i) + 1] += adjStart_[static_cast<size_t>(i)];
     adj_.resize(static_cast<size_t>(adjStart_.back()));
     std::vector<int> fill(adjStart_.begin(), adjStart_.end() - 1);
     for (size_t k = 0; k < springs.size(); ++k) {
-        adj_[static_cast<size_t>(fill[static_cast<size_t>(springs[k].i)]++)] = static_cast<int>(k);
-        adj_[static_cast<size_t>(fill[static_cast<size_t>(springs[k].j)]++)] = static_cast<int>(k);
+        const int i = springs[k].i, j = springs[k].j;
+        adj_[static_cast<size_t>(fill[static_cast<size_t>(i)]++)] = {static_cast<int>(k), j};
+        adj_[static_cast<size_t>(fill[static_cast<size_t>(j)]++)] = {static_cast<int>(k), i};
     }
     B_.resize(springs.size());
     Kv_.resize(springs.size());
     Dinv_.resize(static_cast<size_t>(n));
+    mass_.resize(n);
     dvBlock_.setZero(3, n);
 }
 
-void ImplicitEulerSolver::applyA(const std::vector<Spring>& springs, const VectorX& w, double mDiag, const Matrix3X& x,
-                                 Matrix3X& y) const {
-    // (A x)_i = (m_i + Δt c) x_i + Σ_{springs s of i} B_s (x_i − x_other); pinned rows are zero (x is zero there)
+void ImplicitEulerSolver::applyA(const Matrix3X& x, Matrix3X& y) const {
+    // (A x)_i = (m_i + Δt c) x_i + Σ_{springs s of i} B_s (x_i − x_other), B_s u = a_s (n_s·u) n_s + b_s u;
+    // pinned rows are zero (x is zero there)
     const int n = static_cast<int>(x.cols());
 #pragma omp parallel for num_threads(threads_) if (threads_ > 1)
     for (int i = 0; i < n; ++i) {
-        if (!(w[i] > 0.0)) {
+        if (!(mass_[i] > 0.0)) {  // pinned
             y.col(i).setZero();
             continue;
         }
-        Vec3 yi = (1.0 / w[i] + mDiag) * x.col(i);
+        const Vec3 xi = x.col(i);
+        Vec3 yi = mass_[i] * xi;
         for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
-            const Spring& s = springs[static_cast<size_t>(adj_[static_cast<size_t>(e)])];
-            yi += B_[static_cast<size_t>(adj_[static_cast<size_t>(e)])] * (x.col(i) - x.col(s.i == i ? s.j : s.i));
+            const SpringEnd& end = adj_[static_cast<size_t>(e)];
+            const SpringBlock& B = B_[static_cast<size_t>(end.spring)];
+            const Vec3 u = xi - x.col(end.other);
+            yi += (B.a * B.n.dot(u)) * B.n + B.b * u;
         }
         y.col(i) = yi;
     }
@@ -107,15 +112,27 @@ void ImplicitEulerSolver::applyA(const std::vector<Spring>& springs, const Vecto
 bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w, const std::vector<Spring>& springs,
                                       double c, double dt) {
     const int n = static_cast<int>(x.cols());
-    // (2) per spring its block B = −Δt² K_jj − Δt D_jj and Δt² K_jj (v_j − v_i), each spring on its own (no race)
+    // (2) per spring its block B = −Δt² K_jj − Δt D_jj and Δt² K_jj (v_j − v_i), each spring on its own (no race).
+    // K_jj and D_jj as in springJacobianBlocks(), kept as n and two numbers: −Δt² K_jj = aK n nᵀ + bK I.
     const int m = static_cast<int>(springs.size());
 #pragma omp parallel for num_threads(threads_) if (threads_ > 1)
     for (int k = 0; k < m; ++k) {
         const Spring& s = springs[static_cast<size_t>(k)];
-        Mat3 Kjj, Djj;
-        springJacobianBlocks(s, x, Kjj, Djj);
-        B_[static_cast<size_t>(k)] = -dt * dt * Kjj - dt * Djj;
-        Kv_[static_cast<size_t>(k)] = dt * dt * Kjj * (v.col(s.j) - v.col(s.i));
+        SpringBlock& B = B_[static_cast<size_t>(k)];
+        const Vec3 d = x.col(s.j) - x.col(s.i);
+        const double l = d.norm();
+        if (!(l > 1e-12)) {  // no direction: no stiffness
+            B = {Vec3::Zero(), 0.0, 0.0};
+            Kv_[static_cast<size_t>(k)].setZero();
+            continue;
+        }
+        B.n = d / l;
+        const double transverse = std::max(0.0, 1.0 - s.l0 / l);  // clamped: never indefinite
+        const double aK = dt * dt * s.k * (1.0 - transverse), bK = dt * dt * s.k * transverse;
+        B.a = aK + dt * s.kd;  // −Δt² K_jj − Δt D_jj, D_jj = −k_d n nᵀ
+        B.b = bK;
+        const Vec3 u = v.col(s.j) - v.col(s.i);
+        Kv_[static_cast<size_t>(k)] = -(aK * B.n.dot(u) * B.n + bK * u);
     }
     // b_i = Δt f_i ± (K v) of its springs; the block-Jacobi preconditioner D_i⁻¹, D_i = (m_i + Δt c) I + Σ B_s; per particle
     bBlock_.resize(3, n);
@@ -123,14 +140,18 @@ bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w
     for (int i = 0; i < n; ++i) {
         if (!(w[i] > 0.0)) {
             bBlock_.col(i).setZero();
+            mass_[i] = 0.0;
+            Dinv_[static_cast<size_t>(i)].setZero();  // keeps z, and so Δv, zero there
             continue;
         }
+        mass_[i] = 1.0 / w[i] + dt * c;
         Vec3 bi = dt * f_.col(i);
-        Mat3 D = (1.0 / w[i] + dt * c) * Mat3::Identity();
+        Mat3 D = mass_[i] * Mat3::Identity();
         for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
-            const size_t k = static_cast<size_t>(adj_[static_cast<size_t>(e)]);
+            const size_t k = static_cast<size_t>(adj_[static_cast<size_t>(e)].spring);
+            const SpringBlock& B = B_[k];
             bi += springs[k].j == i ? Kv_[k] : Vec3(-Kv_[k]);
-            D += B_[k];
+            D += B.a * B.n * B.n.transpose() + B.b * Mat3::Identity();
         }
         bBlock_.col(i) = bi;
         Dinv_[static_cast<size_t>(i)] = D.inverse();
@@ -144,7 +165,7 @@ bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w
     for (int i = 0; i < n; ++i)
         if (!(w[i] > 0.0)) dv.col(i).setZero();
     Matrix3X r(3, n), z(3, n), p(3, n), Ap(3, n);
-    applyA(springs, w, dt * c, dv, Ap);
+    applyA(dv, Ap);
     r = bBlock_ - Ap;
     const double bb = dot(bBlock_, bBlock_, threads_);
     const double goal = kTolerance * kTolerance * bb;
@@ -153,7 +174,7 @@ bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w
     double rz = dot(r, z, threads_), rr = dot(r, r, threads_);
     iterations_ = 0;
     for (const int maxIterations = 6 * n; rr > goal && iterations_ < maxIterations; ++iterations_) {
-        applyA(springs, w, dt * c, p, Ap);
+        applyA(p, Ap);
         const double alpha = rz / dot(p, Ap, threads_);
         dv += alpha * p;
         r -= alpha * Ap;
@@ -168,7 +189,7 @@ bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w
     // − Σ_i r_i, off by the residual's sum. Shifting every Δv_i by δ = Σ r_i / Σ (m_i + Δt c) removes
     // it (a uniform shift stretches no spring between free particles): internal forces then conserve
     // momentum exactly, as with the exact solve.
-    applyA(springs, w, dt * c, dv, Ap);
+    applyA(dv, Ap);
     r = bBlock_ - Ap;
     Vec3 rSum = Vec3::Zero();
     double mSum = 0.0;
@@ -176,7 +197,7 @@ bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w
         if (w[i] > 0.0) rSum += r.col(i), mSum += 1.0 / w[i] + dt * c;
     for (int i = 0; i < n; ++i)
         if (w[i] > 0.0) dv.col(i) += rSum / mSum;
-    applyA(springs, w, dt * c, dv, Ap);  // the true residual, not the recurrence's
+    applyA(dv, Ap);  // the true residual, not the recurrence's
     r = bBlock_ - Ap;
     residual_ = bb > 0.0 ? std::sqrt(dot(r, r, threads_) / bb) : 0.0;
 

@@ -17,30 +17,34 @@ void addCorrection(const BendingStencil& s, const BendingCorrection& c, Matrix3X
     p.col(s.i4) += c.dp4;
 }
 
-/// Runs f; an exception it throws (a stub's "not implemented", say) is kept in `error` (the first one).
-template <class F>
-void rethrowLater(const F& f, std::exception_ptr& error) {
-    try {
-        f();
-    } catch (...) {
+/// Keeps the first exception thrown (a stub's "not implemented", say) in `error`.
+void keepFirst(std::exception_ptr& error) {
 #pragma omp critical(clothlab_sweep_error)
-        if (!error) error = std::current_exception();
-    }
+    if (!error) error = std::current_exception();
 }
 
 /// Calls project(n) for the constraints n = 0 .. count − 1: group after group, the constraints of
 /// one group in parallel (they share no particle, so the order within a group does not matter).
+/// Each thread takes one contiguous share of a group; one thread (or no plan) is the plain loop.
 template <class Project>
 void forEachConstraint(size_t count, const SweepPlan& plan, const Project& project) {
-    if (plan.groups.empty()) {  // no plan: one group, serial
+    if (plan.groups.empty() || plan.threads <= 1) {  // serial, in the list's order
         for (size_t n = 0; n < count; ++n) project(static_cast<int>(n));
         return;
     }
     for (size_t g = 0; g + 1 < plan.groups.size(); ++g) {
-        const int first = plan.groups[g], last = plan.groups[g + 1];
-        std::exception_ptr error;  // an exception must not leave a parallel loop: rethrown after it
-#pragma omp parallel for num_threads(plan.threads) if (plan.threads > 1)
-        for (int n = first; n < last; ++n) rethrowLater([&] { project(n); }, error);
+        const int first = plan.groups[g], size = plan.groups[g + 1] - first;
+        std::exception_ptr error;  // an exception must not leave a parallel region: rethrown after it
+#pragma omp parallel num_threads(plan.threads)
+        {
+            const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+            const int begin = first + size * t / threads, end = first + size * (t + 1) / threads;
+            try {
+                for (int n = begin; n < end; ++n) project(n);
+            } catch (...) {
+                keepFirst(error);
+            }
+        }
         if (error) std::rethrow_exception(error);
     }
 }
@@ -120,13 +124,16 @@ void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, con
     const int runs = static_cast<int>(start.size()) - 1;
     std::exception_ptr error;
 #pragma omp parallel for num_threads(threads) if (threads > 1 && increasing)
-    for (int r = 0; r < runs; ++r)
-        rethrowLater([&] {
+    for (int r = 0; r < runs; ++r) {
+        try {
             for (int k = start[static_cast<size_t>(r)]; k < start[static_cast<size_t>(r) + 1]; ++k) {
                 const CollisionConstraint& c = contacts[static_cast<size_t>(k)];
                 p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
             }
-        }, error);
+        } catch (...) {
+            keepFirst(error);
+        }
+    }
     if (error) std::rethrow_exception(error);
 }
 

@@ -57,10 +57,10 @@ enum class ImplicitSolve {
     Auto,                  ///< Cholesky up to 1500 unknowns, above BlockCg (the default)
     Cholesky,              ///< sparse LDLᵀ (Eigen::SimplicialLDLT), pattern analysed once, factorised every step
     CgJacobi,              ///< conjugate gradients, diagonal preconditioner, relative residual 10⁻¹⁰ (the solver before issue 14)
-    CgIncompleteCholesky,  ///< conjugate gradients (Eigen), incomplete Cholesky preconditioner, relative residual 10⁻⁴
+    CgIncompleteCholesky,  ///< conjugate gradients (Eigen), incomplete Cholesky preconditioner, relative residual 10⁻³
     /// Conjugate gradients on the 3x3 spring blocks without an assembled matrix: (A x)_i =
     /// (m_i + Δt c) x_i + Σ_s B_s (x_i − x_j) per particle, block-Jacobi preconditioner (the inverse
-    /// 3x3 diagonal blocks), relative residual 10⁻⁴; particles in parallel (solver.threads), the
+    /// 3x3 diagonal blocks), relative residual 10⁻³; particles in parallel (solver.threads), the
     /// same bits on any number of threads.
     BlockCg,
 };
@@ -76,7 +76,7 @@ public:
     /// exact, robust for extreme stiffness and mass ratios; pattern analysed once); above, where the
     /// factor fills in and costs seconds per step, by conjugate gradients on the 3x3 blocks of the
     /// springs (ImplicitSolve::BlockCg), started from the previous step's Δv, until the relative
-    /// residual \f$ |b - A\Delta v|/|b| \f$ is below 10⁻⁴. That is far below the step's own error: one
+    /// residual \f$ |b - A\Delta v|/|b| \f$ is below 10⁻³. That is far below the step's own error: one
     /// linearised (Newton) step of a first-order method. If it does not converge within 2·unknowns
     /// iterations, the finite iterate is used.
     /// The sparsity pattern is rebuilt when particles are pinned or released.
@@ -112,8 +112,8 @@ private:
     int offset(int r, int c);
     /// Per particle the list of its springs, and the per-spring storage of BlockCg.
     void buildBlocks(const VectorX& w, const std::vector<Spring>& springs);
-    /// y = A x with A from the spring blocks B_ (BlockCg); x, y 3 x N, zero at pinned particles.
-    void applyA(const std::vector<Spring>& springs, const VectorX& w, double mDiag, const Matrix3X& x, Matrix3X& y) const;
+    /// y = A x with A from the spring blocks B_ and the masses mass_ (BlockCg); x, y 3 x N, zero at pinned particles.
+    void applyA(const Matrix3X& x, Matrix3X& y) const;
     /// Steps (2)–(4) of step() with BlockCg; f_ holds the forces.
     bool stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w, const std::vector<Spring>& springs, double c, double dt);
 
@@ -136,8 +136,21 @@ private:
     VectorX b_;                                ///< right-hand side
     double residual_ = 0.0;                    ///< relative residual of the last solve
     int threads_ = 1;                          ///< threads of BlockCg
-    std::vector<int> adjStart_, adj_;          ///< BlockCg: springs of particle i are adj_[adjStart_[i] .. adjStart_[i+1] − 1]
-    std::vector<Eigen::Matrix3d> B_;           ///< BlockCg: per spring −Δt² K_jj − Δt D_jj
+    /// A spring's block of A, \f$ B = -\Delta t^2 K_{jj} - \Delta t D_{jj} = a\,\hat n\hat n^T + b\,I \f$ (kg).
+    struct SpringBlock {
+        Vec3 n{0, 0, 0};  ///< unit direction n̂ of the spring
+        double a = 0.0;   ///< kg
+        double b = 0.0;   ///< kg
+    };
+    /// One spring of a particle and the particle at its other end.
+    struct SpringEnd {
+        int spring = 0;   ///< index into the springs
+        int other = 0;    ///< the particle at the other end
+    };
+    std::vector<int> adjStart_;                ///< BlockCg: the springs of particle i are adj_[adjStart_[i] .. adjStart_[i+1] − 1]
+    std::vector<SpringEnd> adj_;               ///< BlockCg: per particle its springs and their other ends
+    std::vector<SpringBlock> B_;               ///< BlockCg: per spring −Δt² K_jj − Δt D_jj
+    VectorX mass_;                             ///< BlockCg: per particle m_i + Δt c, kg (0 if pinned)
     std::vector<Vec3> Kv_;                     ///< BlockCg: per spring Δt² K_jj (v_j − v_i)
     std::vector<Eigen::Matrix3d> Dinv_;        ///< BlockCg: per particle the inverse diagonal block of A
     Matrix3X bBlock_, dvBlock_;                ///< BlockCg: right-hand side and Δv, 3 x N (zero at pinned particles)
