@@ -152,6 +152,8 @@ BENCHMARK(BM_XpbdStep)->Apply(stepArgs);
 #ifdef CLOTHLAB_BENCH_BATCHED
 static void BM_PbdStepBatched(benchmark::State& st) { step(st, "batched", "pbd"); }
 BENCHMARK(BM_PbdStepBatched)->Apply(stepArgs);
+static void BM_XpbdStepBatched(benchmark::State& st) { step(st, "batched", "xpbd"); }
+BENCHMARK(BM_XpbdStepBatched)->Apply(stepArgs);
 #endif
 
 BENCHMARK_MAIN();

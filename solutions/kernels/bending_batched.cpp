@@ -58,8 +58,8 @@ constexpr AtanCoefficients kAtan;
 [[gnu::always_inline]] inline void bendingCorrection(
     double p1x, double p1y, double p1z, double p2x, double p2y, double p2z,
     double p3x, double p3y, double p3z, double p4x, double p4y, double p4z,
-    const double* w, int j1, int j2, int j3, int j4, double phi0, double k,
-    double& d1x, double& d1y, double& d1z, double& d2x, double& d2y, double& d2z,
+    const double* w, int j1, int j2, int j3, int j4, double phi0, double k, double alphaTilde, double lambda,
+    double& dLambda, double& d1x, double& d1y, double& d1z, double& d2x, double& d2y, double& d2z,
     double& d3x, double& d3y, double& d3z, double& d4x, double& d4y, double& d4z) {
     // a, b, c: p2, p3, p4 relative to p1
     const double ax = p2x - p1x, ay = p2y - p1y, az = p2z - p1z;
@@ -90,12 +90,15 @@ constexpr AtanCoefficients kAtan;
     const double Dn = w1 * (q1x * q1x + q1y * q1y + q1z * q1z) + w2 * (q2x * q2x + q2y * q2y + q2z * q2z) +
                       w3 * (q3x * q3x + q3y * q3y + q3z * q3z) + w4 * (q4x * q4x + q4y * q4y + q4z * q4z);
     const double LL = L1 * L2;
-    double f = k * (phi - phi0) * LL * S / Dn;
+    // PBD (α̃ = 0): f = k C L1L2 S/Σw|Q|²; XPBD (k = 1): f = (C + α̃λ) L1L2 S/(Σw|Q|² + α̃ (L1L2 S)²), Δλ = −f L1L2 S
+    const double LLS = LL * S;
+    double f = (k * (phi - phi0) + alphaTilde * lambda) * LLS / (Dn + alphaTilde * LLS * LLS);
     // The cases without a correction (as in exercise 5.2), as selects, not branches.
     f = L1 < 1e-24 ? 0.0 : f;                 // zero-area triangle
     f = L2 < 1e-24 ? 0.0 : f;
     f = S2 < 1e-12 * LL ? 0.0 : f;            // flat or folded: 1 − d² < 1e-12
     f = Dn < 1e-24 * LL * LL * LL ? 0.0 : f;  // all pinned: Σ w_j |q_j|² < 1e-24
+    dLambda = -f * LLS;
     const double f1 = f * w1, f2 = f * w2, f3 = f * w3, f4 = f * w4;
     d1x = f1 * q1x, d1y = f1 * q1y, d1z = f1 * q1z;
     d2x = f2 * q2x, d2y = f2 * q2y, d2z = f2 * q2z;
@@ -109,9 +112,10 @@ struct BlockArrays {
     const double* phi0;            // rest angle of each stencil
     const int* start;              // block b: stencils start[b] .. start[b+1] − 1
     int first, last;               // the blocks to sweep
-    BlockArrays(const BendingBlocks& B, int firstBlock, int lastBlock)
+    double* lambda;                // XPBD: λ of each stencil (updated); PBD: null
+    BlockArrays(const BendingBlocks& B, int firstBlock, int lastBlock, double* lambdas)
         : i1(B.i1.data()), i2(B.i2.data()), i3(B.i3.data()), i4(B.i4.data()), phi0(B.phi0.data()),
-          start(B.start.data()), first(firstBlock), last(lastBlock) {}
+          start(B.start.data()), first(firstBlock), last(lastBlock), lambda(lambdas) {}
 };
 
 // target_clones with "arch=x86-64-vN" needs GCC 12 and ifunc (glibc); elsewhere one plain build.
@@ -126,17 +130,21 @@ struct BlockArrays {
 #ifdef CLOTHLAB_X86_DISPATCH
 __attribute__((target_clones("default", "arch=x86-64-v4")))
 #endif
-void sweepDirect(const BlockArrays& B, const double* w, double k, double* P) {
+void sweepDirect(const BlockArrays& B, const double* w, double k, double alphaTilde, double* P) {
     const int *I1 = B.i1, *I2 = B.i2, *I3 = B.i3, *I4 = B.i4;
+    alignas(64) double unused[kBendingBlockSize];  // PBD: λ = 0 for every stencil of a block
     for (int blk = B.first; blk < B.last; ++blk) {
-        const int first = B.start[blk], last = B.start[blk + 1];
+        const int first = B.start[blk], n = B.start[blk + 1] - first;
+        double* lam = B.lambda ? B.lambda + first : unused;
+        if (!B.lambda) std::fill(unused, unused + kBendingBlockSize, 0.0);
 #pragma omp simd
-        for (int s = first; s < last; ++s) {
-            const int i1 = 3 * I1[s], i2 = 3 * I2[s], i3 = 3 * I3[s], i4 = 3 * I4[s];
-            double d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z;
+        for (int l = 0; l < n; ++l) {
+            const int s = first + l, i1 = 3 * I1[s], i2 = 3 * I2[s], i3 = 3 * I3[s], i4 = 3 * I4[s];
+            double dl, d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z;
             bendingCorrection(P[i1], P[i1 + 1], P[i1 + 2], P[i2], P[i2 + 1], P[i2 + 2], P[i3], P[i3 + 1], P[i3 + 2],
-                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], B.phi0[s], k,
-                              d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z);
+                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], B.phi0[s], k, alphaTilde,
+                              lam[l], dl, d1x, d1y, d1z, d2x, d2y, d2z, d3x, d3y, d3z, d4x, d4y, d4z);
+            lam[l] += dl;
             P[i1] += d1x, P[i1 + 1] += d1y, P[i1 + 2] += d1z;
             P[i2] += d2x, P[i2 + 1] += d2y, P[i2 + 2] += d2z;
             P[i3] += d3x, P[i3 + 1] += d3y, P[i3 + 2] += d3z;
@@ -152,24 +160,47 @@ void sweepDirect(const BlockArrays& B, const double* w, double k, double* P) {
 #ifdef CLOTHLAB_X86_DISPATCH
 __attribute__((target_clones("default", "arch=x86-64-v3")))
 #endif
-void sweepStaged(const BlockArrays& B, const double* w, double k, double* P) {
+void sweepStaged(const BlockArrays& B, const double* w, double k, double alphaTilde, double* P) {
     const int *I1 = B.i1, *I2 = B.i2, *I3 = B.i3, *I4 = B.i4;
     alignas(64) double Dp[12][kBendingBlockSize];
+    alignas(64) double unused[kBendingBlockSize];  // PBD: λ = 0 for every stencil of a block
     for (int blk = B.first; blk < B.last; ++blk) {
         const int first = B.start[blk], n = B.start[blk + 1] - first;
+        double* lam = B.lambda ? B.lambda + first : unused;
+        if (!B.lambda) std::fill(unused, unused + kBendingBlockSize, 0.0);
 #pragma omp simd
         for (int l = 0; l < n; ++l) {
             const int s = first + l, i1 = 3 * I1[s], i2 = 3 * I2[s], i3 = 3 * I3[s], i4 = 3 * I4[s];
+            double dl;
             bendingCorrection(P[i1], P[i1 + 1], P[i1 + 2], P[i2], P[i2 + 1], P[i2 + 2], P[i3], P[i3 + 1], P[i3 + 2],
-                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], B.phi0[s], k, Dp[0][l],
-                              Dp[1][l], Dp[2][l], Dp[3][l], Dp[4][l], Dp[5][l], Dp[6][l], Dp[7][l], Dp[8][l], Dp[9][l],
-                              Dp[10][l], Dp[11][l]);
+                              P[i4], P[i4 + 1], P[i4 + 2], w, I1[s], I2[s], I3[s], I4[s], B.phi0[s], k, alphaTilde,
+                              lam[l], dl, Dp[0][l], Dp[1][l], Dp[2][l], Dp[3][l], Dp[4][l], Dp[5][l], Dp[6][l], Dp[7][l],
+                              Dp[8][l], Dp[9][l], Dp[10][l], Dp[11][l]);
+            lam[l] += dl;
         }
         for (int l = 0; l < n; ++l) {
             const int s = first + l;
             const int id[4] = {I1[s], I2[s], I3[s], I4[s]};
             for (int j = 0; j < 4; ++j)
                 for (int c = 0; c < 3; ++c) P[3 * id[j] + c] += Dp[3 * j + c][l];
+        }
+    }
+}
+// Both sweeps, colour group by colour group: PBD (α̃ = 0, lambda null) or XPBD (k = 1).
+void sweepBlocks(const BendingBlocks& blocks, const VectorX& w, double k, double alphaTilde, double* lambda, Matrix3X& p,
+                 BendingLoop loop) {
+    const auto sweep = loop == BendingLoop::Best && bendingBlocksUseScatter() ? sweepDirect : sweepStaged;
+    if (blocks.threads <= 1) {  // serial: the blocks in order
+        sweep(BlockArrays(blocks, 0, static_cast<int>(blocks.start.size()) - 1, lambda), w.data(), k, alphaTilde, p.data());
+        return;
+    }
+    for (size_t g = 0; g + 1 < blocks.groups.size(); ++g) {
+        const int first = blocks.groups[g], last = blocks.groups[g + 1];
+#pragma omp parallel num_threads(blocks.threads)
+        {  // each thread one contiguous share of the group's blocks
+            const int t = omp_get_thread_num(), threads = omp_get_num_threads(), size = last - first;
+            sweep(BlockArrays(blocks, first + size * t / threads, first + size * (t + 1) / threads, lambda), w.data(), k,
+                  alphaTilde, p.data());
         }
     }
 }
@@ -219,19 +250,12 @@ bool bendingBlocksUseScatter() {
 }
 
 void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p, BendingLoop loop) {
-    const auto sweep = loop == BendingLoop::Best && bendingBlocksUseScatter() ? sweepDirect : sweepStaged;
-    if (blocks.threads <= 1) {  // serial: the blocks in order
-        sweep(BlockArrays(blocks, 0, static_cast<int>(blocks.start.size()) - 1), w.data(), k, p.data());
-        return;
-    }
-    for (size_t g = 0; g + 1 < blocks.groups.size(); ++g) {
-        const int first = blocks.groups[g], last = blocks.groups[g + 1];
-#pragma omp parallel num_threads(blocks.threads)
-        {  // each thread one contiguous share of the group's blocks
-            const int t = omp_get_thread_num(), threads = omp_get_num_threads(), size = last - first;
-            sweep(BlockArrays(blocks, first + size * t / threads, first + size * (t + 1) / threads), w.data(), k, p.data());
-        }
-    }
+    sweepBlocks(blocks, w, k, 0.0, nullptr, p, loop);
+}
+
+void projectBendingBlocksXpbd(const BendingBlocks& blocks, const VectorX& w, double alphaTilde,
+                              std::vector<double>& lambda, Matrix3X& p, BendingLoop loop) {
+    sweepBlocks(blocks, w, 1.0, alphaTilde, lambda.data(), p, loop);
 }
 
 }  // namespace clothlab

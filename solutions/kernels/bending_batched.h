@@ -19,6 +19,11 @@
 ///     \vec Q_2=L_2\,\vec b\times\vec E_1+L_1\,\vec c\times\vec E_2,\quad \vec Q_1=-\vec Q_2-\vec Q_3-\vec Q_4 \f]
 /// so that the correction of exercise 5.2 becomes
 /// \f[ \Delta\vec p_i=k\,(\varphi-\varphi_0)\,\frac{L_1L_2\,S}{\sum_j w_j|\vec Q_j|^2}\,w_i\vec Q_i. \f]
+/// XPBD (projectBendingXpbd() in sim/xpbd.h) moves along the same vectors: with
+/// \f$\nabla_i C=-\vec q_i/\sin\varphi\f$ and \f$\sum_j w_j|\nabla_j C|^2=\sum_j w_j|\vec Q_j|^2/(L_1L_2S)^2\f$,
+/// \f[ \Delta\vec p_i=f\,w_i\vec Q_i,\qquad f=\frac{(\varphi-\varphi_0+\tilde\alpha\lambda)\,L_1L_2S}{\sum_j w_j|\vec Q_j|^2+\tilde\alpha\,(L_1L_2S)^2},
+///     \qquad \Delta\lambda=-f\,L_1L_2S, \f]
+/// which is the PBD correction with k = 1 for \f$\tilde\alpha = 0\f$.
 #pragma once
 #include <vector>
 
@@ -74,6 +79,18 @@ enum class BendingLoop {
 /// @param loop    BendingLoop::Best, or Staged to test that loop on a CPU with AVX-512
 void projectBendingBlocks(const BendingBlocks& blocks, const VectorX& w, double k, Matrix3X& p,
                           BendingLoop loop = BendingLoop::Best);
+
+/// One XPBD sweep over the stencils, in the order and with the threads of projectBendingBlocks(): the
+/// same result as projectBendingSweepXpbd() (sim/sweeps.h) up to rounding, with the correction of this
+/// file's header; no correction where projectBendingBlocks() gives none.
+/// @param blocks      the stencils, from bendingBlocks()
+/// @param w           inverse masses, length N, 1/kg
+/// @param alphaTilde  compliance of the angle over the squared (sub)step, α/Δt²
+/// @param lambda      one multiplier λ per stencil in the order of bendingBlocks()' input, updated
+/// @param p           predicted positions, 3 x N, m (updated in place)
+/// @param loop        BendingLoop::Best, or Staged to test that loop on a CPU with AVX-512
+void projectBendingBlocksXpbd(const BendingBlocks& blocks, const VectorX& w, double alphaTilde,
+                              std::vector<double>& lambda, Matrix3X& p, BendingLoop loop = BendingLoop::Best);
 
 /// Whether BendingLoop::Best uses AVX-512 gather/scatter on this CPU (x86-64-v4, built with GCC ≥ 12
 /// for glibc) or the staged loop.

@@ -12,7 +12,12 @@ namespace {
 const bool registered = [] {
     registerBendingSweep("batched", [](const std::vector<BendingStencil>& stencils, const SweepPlan& plan) -> BendingSweep {
         auto blocks = std::make_shared<const BendingBlocks>(bendingBlocks(stencils, plan));
-        return [blocks](const VectorX& w, double k, Matrix3X& p) { projectBendingBlocks(*blocks, w, k, p); };
+        BendingSweep sweep;
+        sweep.pbd = [blocks](const VectorX& w, double k, Matrix3X& p) { projectBendingBlocks(*blocks, w, k, p); };
+        sweep.xpbd = [blocks](const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p) {
+            projectBendingBlocksXpbd(*blocks, w, alphaTilde, lambda, p);
+        };
+        return sweep;
     });
     return true;
 }();

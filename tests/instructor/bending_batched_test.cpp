@@ -243,7 +243,48 @@ TEST(BendingBatched, SceneOptionRunsTheSameSimulation) {
     }
     EXPECT_GT((none->state().x - ref->state().x).cwiseAbs().maxCoeff(), 1e-2) << "bending must matter here";
     EXPECT_LE((fast->state().x - ref->state().x).cwiseAbs().maxCoeff(), 1e-9);
-    EXPECT_THROW(makeSimulation(hangingScene({"solver.method=xpbd", "solver.bending_kernel=batched"})), InputError);
+}
+
+TEST(BendingBatched, XpbdSweepMatchesTheExerciseXpbdSweep) {
+    // XPBD through the kernel: the same multipliers and positions as projectBendingSweepXpbd() (exercise
+    // 5.2 per stencil), up to rounding, on crumpled cloths, for stiff (α̃ = 0) and compliant angles;
+    // λ carries over between the sweeps of a step, so three sweeps.
+    for (unsigned seed : {1u, 2u})
+        for (double alphaTilde : {0.0, 1e-3, 10.0})
+            for (BendingLoop loop : kLoops) {
+                SCOPED_TRACE("seed " + std::to_string(seed) + ", alphaTilde " + std::to_string(alphaTilde) +
+                             (loop == BendingLoop::Staged ? ", staged" : ""));
+                const CrumpledCloth c(24, seed);
+                const BendingBlocks b = bendingBlocks(c.stencils);
+                Matrix3X ref = c.p, fast = c.p;
+                std::vector<double> lambdaRef(c.stencils.size(), 0.0), lambdaFast(c.stencils.size(), 0.0);
+                for (int sweep = 0; sweep < 3; ++sweep) {
+                    projectBendingSweepXpbd(c.stencils, c.w, alphaTilde, lambdaRef, ref);
+                    projectBendingBlocksXpbd(b, c.w, alphaTilde, lambdaFast, fast, loop);
+                }
+                ASSERT_TRUE(fast.allFinite());
+                const double moved = (ref - c.p).cwiseAbs().maxCoeff();
+                EXPECT_GT(moved, 1e-3) << "the sweeps must move the cloth";
+                EXPECT_LE((fast - ref).cwiseAbs().maxCoeff(), 1e-10);
+                double lambdaMax = 0.0, lambdaDiff = 0.0;
+                for (size_t n = 0; n < c.stencils.size(); ++n) {
+                    lambdaMax = std::max(lambdaMax, std::fabs(lambdaRef[n]));
+                    lambdaDiff = std::max(lambdaDiff, std::fabs(lambdaFast[n] - lambdaRef[n]));
+                }
+                EXPECT_GT(lambdaMax, 0.0);
+                EXPECT_LE(lambdaDiff, 1e-9 * lambdaMax);
+            }
+}
+
+TEST(BendingBatched, XpbdSceneOptionRunsTheSameSimulation) {
+    const std::vector<std::string> xpbd = {"cloth.orientation=horizontal", "solver.method=xpbd",
+                                           "constraints.bending.compliance=0.01"};
+    std::vector<std::string> batched = xpbd;
+    batched.push_back("solver.bending_kernel=batched");
+    auto ref = makeSimulation(hangingScene(xpbd));
+    auto fast = makeSimulation(hangingScene(batched));
+    for (int i = 0; i < 100; ++i) ref->step(), fast->step();
+    EXPECT_LE((fast->state().x - ref->state().x).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 TEST(BendingBatched, TwoThreadsGiveTheSerialStateBitForBit) {

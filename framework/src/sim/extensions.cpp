@@ -24,8 +24,14 @@ std::vector<std::string> bendingSweepNames() {
 }
 
 BendingSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils, const SweepPlan& plan) {
-    if (name == "exercise")
-        return [stencils, plan](const VectorX& w, double k, Matrix3X& p) { projectBendingSweep(stencils, w, k, p, plan); };
+    if (name == "exercise") {
+        BendingSweep sweep;
+        sweep.pbd = [stencils, plan](const VectorX& w, double k, Matrix3X& p) { projectBendingSweep(stencils, w, k, p, plan); };
+        sweep.xpbd = [stencils, plan](const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p) {
+            projectBendingSweepXpbd(stencils, w, alphaTilde, lambda, p, plan);
+        };
+        return sweep;
+    }
     const auto it = registry().find(name);
     if (it == registry().end()) throw std::out_of_range("no bending sweep \"" + name + "\" is registered");
     return it->second(stencils, plan);

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "clothlab/core/grid.h"
-#include "clothlab/core/input_error.h"
 #include "clothlab/core/topology.h"
 #include "clothlab/sim/colliders.h"
 #include "clothlab/sim/xpbd.h"
@@ -58,10 +57,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         stencilPlan_ = sweepPlan(ordered, P_.size(), threads_);
         bendLambda_.assign(stencils_.size(), 0.0);
         if (!xpbd_) kBending_ = iterationStiffness(scene.constraints.bending.stiffness, sv.iterations);
-        if (xpbd_ && sv.bendingKernel != "exercise")
-            throw InputError(scene.file, "solver.bending_kernel",
-                             "\"" + sv.bendingKernel + "\" works with method \"pbd\" only (xpbd uses \"exercise\")");
-        if (!xpbd_) bendingSweep_ = makeBendingSweep(sv.bendingKernel, stencils_, stencilPlan_);
+        bendingSweep_ = makeBendingSweep(sv.bendingKernel, stencils_, stencilPlan_);  // "exercise": exercise 5.2
     }
     if (!scene.colliders.empty()) {
         generatePass_ = timer_.add("collisions: generate");
@@ -168,8 +164,8 @@ void PbdSimulation::projectConstraints(Matrix3X& p) {
     }
     if (bendingPass_ >= 0) {
         auto timed = timer_.time(bendingPass_);
-        if (xpbd_) projectBendingSweepXpbd(stencils_, w, scene_.constraints.bending.compliance / dt2, bendLambda_, p, stencilPlan_);
-        else bendingSweep_(w, kBending_, p);
+        if (xpbd_) bendingSweep_.xpbd(w, scene_.constraints.bending.compliance / dt2, bendLambda_, p);
+        else bendingSweep_.pbd(w, kBending_, p);
     }
     if (collisionPass_ >= 0) {
         auto timed = timer_.time(collisionPass_);

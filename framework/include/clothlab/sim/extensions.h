@@ -17,9 +17,14 @@
 namespace clothlab {
 
 /// One Gauss–Seidel sweep over a fixed list of bending stencils (lines (9)–(10) of the PBD loop,
-/// bending part): moves the predicted positions p (3 x N, m) given the inverse masses w (N, 1/kg)
-/// and the per-iteration stiffness k' in [0, 1].
-using BendingSweep = std::function<void(const VectorX& w, double k, Matrix3X& p)>;
+/// bending part), in its PBD and its XPBD form. Both move the predicted positions p (3 x N, m) given
+/// the inverse masses w (N, 1/kg).
+struct BendingSweep {
+    /// PBD, with the per-iteration stiffness k' in [0, 1]: the result of projectBendingSweep().
+    std::function<void(const VectorX& w, double k, Matrix3X& p)> pbd;
+    /// XPBD, with α̃ = α/Δt² and one multiplier λ per stencil (updated): the result of projectBendingSweepXpbd().
+    std::function<void(const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p)> xpbd;
+};
 
 /// Makes a sweep for the given stencils, projected in the given order, with their colour groups and
 /// threads (it may precompute whatever it needs from them once). The result must not depend on the
@@ -34,7 +39,8 @@ void registerBendingSweep(const std::string& name, BendingSweepFactory make);
 /// "exercise" (exercise 5.2 per stencil, always there) followed by every registered name.
 std::vector<std::string> bendingSweepNames();
 
-/// The sweep called `name` over `stencils`: "exercise" gives projectBendingSweep() over them.
+/// The sweep called `name` over `stencils`: "exercise" gives projectBendingSweep() and
+/// projectBendingSweepXpbd() over them.
 /// @param name      "exercise" or a registered name
 /// @param stencils  the stencils in projection order
 /// @param plan      their colour groups (sweepPlan()) and the threads

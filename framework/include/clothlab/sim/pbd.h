@@ -37,8 +37,7 @@ namespace clothlab {
 class PbdSimulation : public Simulation {
 public:
     /// @param scene  a scene with model "cloth" and solver.method "pbd" or "xpbd"
-    /// @throws InputError for a bending kernel PBD cannot use (solver.bending_kernel other than
-    ///         "exercise" with bending constraints under XPBD)
+    /// @throws InputError for a cloth mesh that cannot be read (cloth.mesh)
     explicit PbdSimulation(const Scene& scene);
     /// One frame: solver.substeps times pbdStep() (lines (5)–(16)) with Δt / substeps.
     void step() override;
@@ -85,7 +84,7 @@ private:
     SweepPlan linkPlan_, stencilPlan_;       ///< colour groups of links_ and stencils_
     std::vector<DistanceLink> links_;        ///< distance constraints
     std::vector<BendingStencil> stencils_;   ///< bending constraints
-    BendingSweep bendingSweep_;              ///< PBD bending sweep over stencils_ (extensions.h)
+    BendingSweep bendingSweep_;              ///< PBD and XPBD bending sweeps over stencils_ (extensions.h)
     std::vector<double> linkLambda_;         ///< XPBD multipliers of the links
     std::vector<double> bendLambda_;         ///< XPBD multipliers of the stencils
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step
