@@ -28,9 +28,9 @@ for kernel in PbdStep PbdStepBatched; do
 done
 printf '%-58s %10s  [<= 1.15]\n' "XPBD / PBD, 64², 1 thread, exercise path" "$(ratio "$(pbd XpbdStep 64 1)" "$(pbd PbdStep 64 1)")"
 printf '%-58s %10s  [<= 1.15]\n' "XPBD / PBD, 64², 1 thread, batched kernel" "$(ratio "$(pbd XpbdStepBatched 64 1)" "$(pbd PbdStepBatched 64 1)")"
-new=$(get BM_ImplicitLargeStep/default/128/real_time); old=$(get BM_ImplicitLargeStep/cg_jacobi_old/128/real_time)
+new=$(get BM_ImplicitLargeStep/default/128/iterations:10/real_time); old=$(get BM_ImplicitLargeStep/cg_jacobi_old/128/iterations:10/real_time)
 printf '%-58s %7s ms  [<= 50 ms]\n' "implicit Euler 128², dt = 0.01 s, 1 thread" "$new"
-printf '%-58s %7s ms\n' "implicit Euler 128², 2 threads" "$(get BM_ImplicitLargeStep/default_2_threads/128/real_time)"
+printf '%-58s %7s ms\n' "implicit Euler 128², 2 threads" "$(get BM_ImplicitLargeStep/default_2_threads/128/iterations:10/real_time)"
 printf '%-58s %7s ms  (%sx)\n' "implicit Euler 128², the old solver (CG, Jacobi, 1e-10)" "$old" "$(ratio "$old" "$new")"
 if [[ -x $build/bin/clothlab-render ]]; then
   fps=$("$build/bin/clothlab-render" gui scenes/pbd_sphere.json --set cloth.nx=64 --set cloth.ny=64 \

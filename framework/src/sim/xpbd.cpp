@@ -5,17 +5,6 @@
 
 namespace clothlab {
 
-DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
-                                       double alphaTilde, double& lambda) {
-    const Vec3 n = distanceGradient(p1, p2);  // ∇_{p1} C; zero when the points coincide
-    const double denom = w1 + w2 + alphaTilde;
-    if (n.squaredNorm() == 0.0 || w1 + w2 <= 0.0 || denom <= 0.0) return {Vec3::Zero(), Vec3::Zero()};
-    const double C = n.dot(p1 - p2) - d;  // |p1 − p2| = n·(p1 − p2): no second square root
-    const double dl = (-C - alphaTilde * lambda) / denom;
-    lambda += dl;
-    return {w1 * dl * n, -w2 * dl * n};
-}
-
 double bendingAngle(const BendingGradients& g) {
     if (!g.valid) return M_PI;
     return std::atan2(g.sinPhi, g.d);

@@ -21,8 +21,17 @@ namespace clothlab {
 /// @param alphaTilde   α / Δt², kg⁻¹ (α in m/N)
 /// @param lambda       the constraint's multiplier λ (kg m), updated
 /// @return             Δp1, Δp2, m (zero if both pinned or the points coincide)
-DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
-                                       double alphaTilde, double& lambda);
+inline DistanceCorrection projectDistanceXpbd(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
+                                              double alphaTilde, double& lambda) {
+    // inline: the sweep (sweeps.cpp) calls it once per link and iteration
+    const Vec3 n = distanceGradient(p1, p2);  // ∇_{p1} C; zero when the points coincide
+    const double denom = w1 + w2 + alphaTilde;
+    if (n.squaredNorm() == 0.0 || w1 + w2 <= 0.0 || denom <= 0.0) return {Vec3::Zero(), Vec3::Zero()};
+    const double C = n.dot(p1 - p2) - d;  // |p1 − p2| = n·(p1 − p2): no second square root
+    const double dl = (-C - alphaTilde * lambda) / denom;
+    lambda += dl;
+    return {w1 * dl * n, -w2 * dl * n};
+}
 
 /// The dihedral angle of a stencil from exercise 5.1's output: \f$ \varphi = \operatorname{atan2}(\sin\varphi, d) \f$
 /// (accurate at every angle, unlike arccos d near flat), π for a degenerate stencil (valid = false).
