@@ -196,6 +196,10 @@ void sweepBlocks(const BendingBlocks& blocks, const VectorX& w, double k, double
     }
     for (size_t g = 0; g + 1 < blocks.groups.size(); ++g) {
         const int first = blocks.groups[g], last = blocks.groups[g + 1];
+        if (blocks.start[last] - blocks.start[first] < kParallelGroup) {  // a small group: one thread
+            sweep(BlockArrays(blocks, first, last, lambda), w.data(), k, alphaTilde, p.data());
+            continue;
+        }
 #pragma omp parallel num_threads(blocks.threads)
         {  // each thread one contiguous share of the group's blocks
             const int t = omp_get_thread_num(), threads = omp_get_num_threads(), size = last - first;

@@ -103,6 +103,18 @@ TEST(Parallel, TwoThreadsGiveTheSerialStateBitForBit) {
     }
 }
 
+TEST(Parallel, TheTestedClothHasGroupsLargeEnoughToRunInParallel) {
+    // Groups below kParallelGroup run on one thread: the 40 x 40 cloth above must have larger ones,
+    // or the bit-for-bit comparison would compare the serial sweep with itself.
+    const PbdSimulation sim(scene("pbd_sphere", {"cloth.nx=40", "cloth.ny=40"}));
+    std::vector<Eigen::Vector4i> sets;
+    for (const BendingStencil& b : sim.bendingStencilList()) sets.emplace_back(b.i1, b.i2, b.i3, b.i4);
+    const SweepPlan plan = sweepPlan(sets, sim.state().size(), 2);
+    int large = 0;
+    for (size_t g = 0; g + 1 < plan.groups.size(); ++g) large += plan.groups[g + 1] - plan.groups[g] >= kParallelGroup;
+    EXPECT_GE(large, 4) << "of " << plan.groups.size() - 1 << " bending colour groups";
+}
+
 TEST(Parallel, ThreadsIsValidated) {
     EXPECT_THROW(scene("pbd_sphere", {"solver.threads=-1"}), InputError);
     EXPECT_THROW(scene("pbd_sphere", {"solver.threads=1.5"}), InputError);

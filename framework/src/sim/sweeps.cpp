@@ -25,7 +25,8 @@ void keepFirst(std::exception_ptr& error) {
 
 /// Calls project(n) for the constraints n = 0 .. count − 1: group after group, the constraints of
 /// one group in parallel (they share no particle, so the order within a group does not matter).
-/// Each thread takes one contiguous share of a group; one thread (or no plan) is the plain loop.
+/// Each thread takes one contiguous share of a group; one thread (or no plan) is the plain loop, and
+/// a group smaller than kParallelGroup is swept serially (starting threads would cost more).
 template <class Project>
 void forEachConstraint(size_t count, const SweepPlan& plan, const Project& project) {
     if (plan.groups.empty() || plan.threads <= 1) {  // serial, in the list's order
@@ -34,6 +35,10 @@ void forEachConstraint(size_t count, const SweepPlan& plan, const Project& proje
     }
     for (size_t g = 0; g + 1 < plan.groups.size(); ++g) {
         const int first = plan.groups[g], size = plan.groups[g + 1] - first;
+        if (size < kParallelGroup) {
+            for (int n = first; n < first + size; ++n) project(n);
+            continue;
+        }
         std::exception_ptr error;  // an exception must not leave a parallel region: rethrown after it
 #pragma omp parallel num_threads(plan.threads)
         {
@@ -123,7 +128,7 @@ void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, con
     start.push_back(static_cast<int>(contacts.size()));
     const int runs = static_cast<int>(start.size()) - 1;
     std::exception_ptr error;
-#pragma omp parallel for num_threads(threads) if (threads > 1 && increasing)
+#pragma omp parallel for num_threads(threads) if (threads > 1 && increasing && runs >= kParallelGroup)
     for (int r = 0; r < runs; ++r) {
         try {
             for (int k = start[static_cast<size_t>(r)]; k < start[static_cast<size_t>(r) + 1]; ++k) {

@@ -21,6 +21,11 @@
 
 namespace clothlab {
 
+/// Colour groups with fewer constraints than this are swept by one thread even when SweepPlan::threads
+/// is larger: below it, starting the threads and waiting at the group's end cost more than they save
+/// (the same result either way).
+constexpr int kParallelGroup = 256;
+
 /// A distance constraint between particles i and j with rest length d (an edge of the cloth).
 struct DistanceLink {
     int i = 0;        ///< first particle
