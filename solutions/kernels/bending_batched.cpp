@@ -16,8 +16,6 @@
 //   fused multiply-adds where the CPU has them, so the last digits depend on the CPU.
 #include "bending_batched.h"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -186,27 +184,13 @@ void sweepStaged(const BlockArrays& B, const double* w, double k, double alphaTi
         }
     }
 }
-// Both sweeps, colour group by colour group: PBD (α̃ = 0, lambda null) or XPBD (k = 1).
+// Both sweeps, colour group by colour group (forEachGroupShare()): PBD (α̃ = 0, lambda null) or XPBD (k = 1).
 void sweepBlocks(const BendingBlocks& blocks, const VectorX& w, double k, double alphaTilde, double* lambda, Matrix3X& p,
                  BendingLoop loop) {
     const auto sweep = loop == BendingLoop::Best && bendingBlocksUseScatter() ? sweepDirect : sweepStaged;
-    if (blocks.threads <= 1) {  // serial: the blocks in order
-        sweep(BlockArrays(blocks, 0, static_cast<int>(blocks.start.size()) - 1, lambda), w.data(), k, alphaTilde, p.data());
-        return;
-    }
-    for (size_t g = 0; g + 1 < blocks.groups.size(); ++g) {
-        const int first = blocks.groups[g], last = blocks.groups[g + 1];
-        if (blocks.start[last] - blocks.start[first] < kParallelGroup) {  // a small group: one thread
-            sweep(BlockArrays(blocks, first, last, lambda), w.data(), k, alphaTilde, p.data());
-            continue;
-        }
-#pragma omp parallel num_threads(blocks.threads)
-        {  // each thread one contiguous share of the group's blocks
-            const int t = omp_get_thread_num(), threads = omp_get_num_threads(), size = last - first;
-            sweep(BlockArrays(blocks, first + size * t / threads, first + size * (t + 1) / threads, lambda), w.data(), k,
-                  alphaTilde, p.data());
-        }
-    }
+    forEachGroupShare(blocks.groups, blocks.threads, kParallelGroup / kBendingBlockSize, [&](int begin, int end) {
+        sweep(BlockArrays(blocks, begin, end, lambda), w.data(), k, alphaTilde, p.data());
+    });
 }
 }  // namespace
 

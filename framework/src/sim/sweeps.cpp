@@ -23,35 +23,15 @@ void keepFirst(std::exception_ptr& error) {
     if (!error) error = std::current_exception();
 }
 
-/// Calls project(n) for the constraints n = 0 .. count − 1: group after group, the constraints of
-/// one group in parallel (they share no particle, so the order within a group does not matter).
-/// Each thread takes one contiguous share of a group; one thread (or no plan) is the plain loop, and
-/// a group smaller than kParallelGroup is swept serially (starting threads would cost more).
+/// Calls project(n) for the constraints n = 0 .. count − 1, group after group (forEachGroupShare());
+/// without a plan, in the list's order.
 template <class Project>
 void forEachConstraint(size_t count, const SweepPlan& plan, const Project& project) {
-    if (plan.groups.empty() || plan.threads <= 1) {  // serial, in the list's order
-        for (size_t n = 0; n < count; ++n) project(static_cast<int>(n));
-        return;
-    }
-    for (size_t g = 0; g + 1 < plan.groups.size(); ++g) {
-        const int first = plan.groups[g], size = plan.groups[g + 1] - first;
-        if (size < kParallelGroup) {
-            for (int n = first; n < first + size; ++n) project(n);
-            continue;
-        }
-        std::exception_ptr error;  // an exception must not leave a parallel region: rethrown after it
-#pragma omp parallel num_threads(plan.threads)
-        {
-            const int t = omp_get_thread_num(), threads = omp_get_num_threads();
-            const int begin = first + size * t / threads, end = first + size * (t + 1) / threads;
-            try {
-                for (int n = begin; n < end; ++n) project(n);
-            } catch (...) {
-                keepFirst(error);
-            }
-        }
-        if (error) std::rethrow_exception(error);
-    }
+    const auto sweep = [&](int begin, int end) {
+        for (int n = begin; n < end; ++n) project(n);
+    };
+    if (plan.groups.empty()) sweep(0, static_cast<int>(count));
+    else forEachGroupShare(plan.groups, plan.threads, kParallelGroup, sweep);
 }
 }  // namespace
 
@@ -70,6 +50,28 @@ SweepPlan sweepPlan(const std::vector<Eigen::Vector4i>& particles, int nParticle
     }
     plan.groups.push_back(static_cast<int>(particles.size()));
     return plan;
+}
+
+void forEachGroupShare(const std::vector<int>& groups, int threads, int minParallel,
+                       const std::function<void(int begin, int end)>& sweep) {
+    for (size_t g = 0; g + 1 < groups.size(); ++g) {
+        const int first = groups[g], size = groups[g + 1] - first;
+        if (threads <= 1 || size < minParallel) {  // serial: starting threads would cost more
+            sweep(first, first + size);
+            continue;
+        }
+        std::exception_ptr error;  // an exception must not leave a parallel region: rethrown after it
+#pragma omp parallel num_threads(threads)
+        {
+            const int t = omp_get_thread_num(), n = omp_get_num_threads();
+            try {
+                sweep(first + size * t / n, first + size * (t + 1) / n);
+            } catch (...) {
+                keepFirst(error);
+            }
+        }
+        if (error) std::rethrow_exception(error);
+    }
 }
 
 int sweepThreads(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }

@@ -10,9 +10,10 @@
 /// Two cores: the solver orders its constraints by colour (colourOrder()), so that the constraints
 /// of one colour group share no particle. Projecting them in any order, or at the same time, gives
 /// the same positions bit for bit; each sweep runs one group after the other and the constraints of
-/// a group in parallel (`#pragma omp parallel for`, OpenMP, see docs/performance.md). With
-/// SweepPlan::threads = 1 it is the plain serial loop.
+/// a group in parallel, each thread one contiguous share (forEachGroupShare(), OpenMP, see
+/// docs/performance.md). With SweepPlan::threads = 1 it is the plain serial loop.
 #pragma once
+#include <functional>
 #include <vector>
 
 #include "clothlab/exercise/05_bending.h"
@@ -57,6 +58,18 @@ SweepPlan sweepPlan(const std::vector<Eigen::Vector4i>& particles, int nParticle
 /// @param requested  solver.threads, ≥ 0
 /// @return           ≥ 1
 int sweepThreads(int requested);
+
+/// The colour-group loop every sweep shares (the solver's sweeps and registered kernels): group after
+/// group, sweep(begin, end) over the items groups[g] .. groups[g+1] − 1 of group g. With threads ≥ 2
+/// and at least minParallel items in the group, each thread sweeps one contiguous share of it at the
+/// same time (the items of a group must be independent); otherwise one call sweeps the whole group.
+/// An exception thrown by sweep leaves after its group (the first one, if several threads throw).
+/// @param groups       group boundaries: groups[0] = 0, the last entry the number of items (SweepPlan::groups)
+/// @param threads      threads, ≥ 1
+/// @param minParallel  the smallest group, in items, that is split over the threads
+/// @param sweep        sweeps the items [begin, end) in order
+void forEachGroupShare(const std::vector<int>& groups, int threads, int minParallel,
+                       const std::function<void(int begin, int end)>& sweep);
 
 /// PBD distance sweep: for every link, \f$ \vec p_i \mathrel{+}= \Delta\vec p_1,\ \vec p_j \mathrel{+}= \Delta\vec p_2 \f$
 /// with the corrections of projectDistanceConstraint() (exercise 4.3).
