@@ -23,11 +23,11 @@ using namespace clothlab;
 namespace {
 // An n x n cloth scene pinned at two corners with distance and bending constraints, 10 iterations.
 // Vertical, it hangs in its own plane (every stencil stays flat); horizontal, it drapes in 3D.
-Scene clothScene(int n, const std::string& bendingKernel = "exercise", const std::string& orientation = "vertical") {
+Scene clothScene(int n, const std::string& kernel = "exercise", const std::string& orientation = "vertical") {
     const std::string json = R"({"model": "cloth", "cloth": {"nx": )" + std::to_string(n) + R"(, "ny": )" +
                              std::to_string(n) + R"(, "orientation": ")" + orientation + R"(", "pins": ["top-left", "top-right"]},
         "constraints": {"distance": {"stiffness": 1.0}, "bending": {"stiffness": 0.1}},
-        "solver": {"method": "pbd", "dt": 0.01, "iterations": 10, "bending_kernel": ")" + bendingKernel + R"("}})";
+        "solver": {"method": "pbd", "dt": 0.01, "iterations": 10, "kernel": ")" + kernel + R"("}})";
     return parseScene(json, "bench", {});
 }
 
@@ -105,7 +105,7 @@ BENCHMARK(BM_BendingProjection);
 
 #ifdef CLOTHLAB_BENCH_BATCHED
 // The same sweep (same cloth, same stencils, same order) with the batched kernel of
-// solutions/kernels (solver.bending_kernel "batched"): 8 stencils at a time in AVX-512 registers.
+// solutions/kernels (solver.kernel "batched"): 8 stencils at a time in AVX-512 registers.
 // BendingLoop::Staged: the kernel's loop for CPUs without AVX-512 (no scatter instructions), forced.
 static void bendingBatched(benchmark::State& st, BendingLoop loop) {
     Cloth c;
@@ -128,9 +128,9 @@ BENCHMARK(BM_BendingProjectionBatchedStaged);
 // stencils are bent: a flat cloth would be cheaper, since flat stencils take the early exit.
 // Arguments: n, threads (solver.threads). Wall-clock time (the threads' work is not the main
 // thread's CPU time).
-static void step(benchmark::State& st, const std::string& bendingKernel, const std::string& method) {
+static void step(benchmark::State& st, const std::string& kernel, const std::string& method) {
     const int n = static_cast<int>(st.range(0));
-    Scene scene = clothScene(n, bendingKernel, "horizontal");
+    Scene scene = clothScene(n, kernel, "horizontal");
     scene.solver.method = method == "xpbd" ? Method::Xpbd : Method::Pbd;
     scene.solver.threads = static_cast<int>(st.range(1));
     auto sim = makeSimulation(scene);

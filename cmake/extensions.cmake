@@ -1,9 +1,9 @@
 # Extensions: faster implementations that register themselves at the solver's extension point
 # (framework/include/clothlab/sim/extensions.h). The framework never names them; this file links
 # them into the programs. They are solved exercises, so they live in solutions/kernels/ and the
-# student copy (./lab release) has none: there, solver.bending_kernel allows only "exercise".
+# student copy (./lab release) has none: there, solver.kernel allows only "exercise".
 #
-# clothlab_kernels: the batched bending kernel (solver.bending_kernel "batched"). An OBJECT library,
+# clothlab_kernels: the batched distance and bending kernels (solver.kernel "batched"). An OBJECT library,
 # so that its registering static initialiser is linked into every program that links it.
 # Compiled for speed: vector loops (`#pragma omp simd`), the blocks of a colour group on all cores
 # (`#pragma omp parallel for`, OpenMP), sqrt without errno.
@@ -15,6 +15,7 @@ endif()
 
 add_library(clothlab_kernels OBJECT
   "${PROJECT_SOURCE_DIR}/solutions/kernels/bending_batched.cpp"
+  "${PROJECT_SOURCE_DIR}/solutions/kernels/distance_batched.cpp"
   "${PROJECT_SOURCE_DIR}/solutions/kernels/register_batched.cpp")
 target_include_directories(clothlab_kernels PUBLIC "${PROJECT_SOURCE_DIR}/solutions/kernels")
 target_link_libraries(clothlab_kernels PUBLIC clothlab_headers)
@@ -23,6 +24,9 @@ if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   find_package(OpenMP REQUIRED)
   target_link_libraries(clothlab_kernels PRIVATE OpenMP::OpenMP_CXX)
 endif()
+# No fused multiply-adds in the distance sweep: its vector loop and scalar remainder then round alike,
+# whichever link starts a thread's share (bit-identical for every number of threads).
+set_source_files_properties("${PROJECT_SOURCE_DIR}/solutions/kernels/distance_batched.cpp" PROPERTIES COMPILE_OPTIONS -ffp-contract=off)
 # Never link-time optimised: the link step would recompile it without the flags above and lose its
 # vector loops (measured: 13 ns per bending projection become 48 ns with CLOTHLAB_LTO=ON).
 set_property(TARGET clothlab_kernels PROPERTY INTERPROCEDURAL_OPTIMIZATION OFF)

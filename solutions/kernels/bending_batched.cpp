@@ -1,4 +1,4 @@
-// The batched bending sweep (solver.bending_kernel "batched"); formulas in bending_batched.h.
+// The batched bending sweep (solver.kernel "batched"); formulas in bending_batched.h.
 //
 // How it is made fast, for the curious (none of this is needed for the exercises):
 // - the stencils of a block share no particle, so `#pragma omp simd` may run them side by side:

@@ -3,7 +3,7 @@
 ///
 /// The solver's default bending sweep calls exercise 5.2, projectBendingConstraint(), once per
 /// stencil. This file does the same projections, in the same order, several stencils at a time with the
-/// CPU's vector instructions: the solver option `solver.bending_kernel: "batched"`. It is a
+/// CPU's vector instructions: the solver option `solver.kernel: "batched"`. It is a
 /// solved stage 05, so `./lab release` leaves it out (it lives in solutions/kernels/).
 ///
 /// The formulas are those of exercise 5.2 rewritten so that a projection needs one square root

@@ -12,6 +12,7 @@
 #include "clothlab/io/scene_json.h"
 #include "clothlab/sim/pbd.h"
 #include "clothlab/sim/run.h"
+#include "clothlab/sim/xpbd.h"
 
 using namespace clothlab;
 
@@ -143,6 +144,21 @@ TEST(Xpbd, BendingComplianceBendsMoreWhenLarger) {
         return metric(*sim, "rms_bending_error");
     };
     EXPECT_LT(2.0 * bend(1e-4), bend(1e4)) << "compliance 1e4 (soft) must bend clearly more than 1e-4 (stiff)";
+}
+
+// A stencil built with a known dihedral angle θ: the edge p1–p2 on the x axis, p3 at angle 0 and p4 at
+// angle θ around it (θ = π: flat), then scaled, rotated and moved.
+TEST(Xpbd, DihedralAngleOfAStencilBuiltWithAKnownAngle) {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    for (double scale : {1e-3, 1.0, 50.0})
+        for (int k = 1; k <= 1000; ++k) {
+            const double theta = M_PI * k / 1000.0;
+            const auto place = [&](const Vec3& q) { return Vec3(R * (scale * q) + Vec3(0.3, -2, 5)); };
+            const Vec3 p1 = place({0, 0, 0}), p2 = place({1, 0, 0}), p3 = place({0.3, 1, 0}),
+                       p4 = place({0.6, 0.8 * std::cos(theta), 0.8 * std::sin(theta)});
+            // rounding of the positions, about 1e-16 of the offset (5 m), relative to the stencil's size
+            EXPECT_NEAR(dihedralAngle(p1, p2, p3, p4), theta, 1e-13 * (1.0 + 10.0 / scale)) << "scale " << scale << ", θ = " << theta;
+        }
 }
 
 // ---- Stability and extreme cases ------------------------------------------------------------------

@@ -87,10 +87,10 @@ for s in scenes/*.json; do
 done
 # The instructors' batched bending kernel is not in the copy (nothing registers it at the solver's
 # extension point): asking for it is one clear input error that lists what there is.
-"$CLOTHLAB_BUILD/bin/clothlab" run scenes/pbd_hanging.json --set solver.bending_kernel=batched --steps 5 >"$tmp/run.log" 2>&1
+"$CLOTHLAB_BUILD/bin/clothlab" run scenes/pbd_hanging.json --set solver.kernel=batched --steps 5 >"$tmp/run.log" 2>&1
 code=$?
-[[ $code -eq 1 && $(grep -c '^error: scenes/pbd_hanging.json: solver.bending_kernel: unknown value "batched" (allowed: exercise)$' "$tmp/run.log") -eq 1 ]] \
-  || fail "bending_kernel batched in the copy: exit $code, $(tail -2 "$tmp/run.log")"
+[[ $code -eq 1 && $(grep -c '^error: scenes/pbd_hanging.json: solver.kernel: unknown value "batched" (allowed: exercise)$' "$tmp/run.log") -eq 1 ]] \
+  || fail "kernel batched in the copy: exit $code, $(tail -2 "$tmp/run.log")"
 # GitHub Classroom: the workflow's grading commands, run here as its job runs them (the Debian setup,
 # the grader, the base64 output the reporter reads), give the reporter's format with every test.
 wf=.github/workflows/classroom.yml

@@ -1,4 +1,4 @@
-// The batched bending kernel (solutions/kernels, solver.bending_kernel "batched") against the
+// The batched bending kernel (solutions/kernels, solver.kernel "batched") against the
 // reference: the same sweep as projectBendingSweep() with the stage-05 reference code, on crumpled
 // cloths and on every degenerate stencil, and its arctan polynomial against std::atan2.
 // In tests/instructor/ because the long-double check below spells out the solution of stage 05.
@@ -234,7 +234,7 @@ TEST(BendingBatched, SceneOptionRunsTheSameSimulation) {
     // stencil would stay flat and no bending code would change anything).
     const std::string horizontal = "cloth.orientation=horizontal";
     auto ref = makeSimulation(hangingScene({horizontal}));
-    auto fast = makeSimulation(hangingScene({horizontal, "solver.bending_kernel=batched"}));
+    auto fast = makeSimulation(hangingScene({horizontal, "solver.kernel=batched"}));
     auto none = makeSimulation(hangingScene({horizontal, "constraints.bending.enabled=false"}));
     for (int i = 0; i < 100; ++i) {
         ref->step();
@@ -280,7 +280,7 @@ TEST(BendingBatched, XpbdSceneOptionRunsTheSameSimulation) {
     const std::vector<std::string> xpbd = {"cloth.orientation=horizontal", "solver.method=xpbd",
                                            "constraints.bending.compliance=0.01"};
     std::vector<std::string> batched = xpbd;
-    batched.push_back("solver.bending_kernel=batched");
+    batched.push_back("solver.kernel=batched");
     auto ref = makeSimulation(hangingScene(xpbd));
     auto fast = makeSimulation(hangingScene(batched));
     for (int i = 0; i < 100; ++i) ref->step(), fast->step();
@@ -290,7 +290,7 @@ TEST(BendingBatched, XpbdSceneOptionRunsTheSameSimulation) {
 TEST(BendingBatched, TwoThreadsGiveTheSerialStateBitForBit) {
     // The blocks of one colour group run in parallel (solver.threads): the same state bit for bit.
     const std::vector<std::string> sets = {"cloth.orientation=horizontal", "cloth.nx=48", "cloth.ny=40",
-                                           "solver.bending_kernel=batched"};
+                                           "solver.kernel=batched"};
     Matrix3X x[2];
     for (int threads : {1, 2}) {
         std::vector<std::string> s = sets;

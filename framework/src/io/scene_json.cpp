@@ -467,7 +467,7 @@ Scene readScene(const json& doc, const std::string& file) {
     s.solver.iterations = sv.integer("iterations", s.solver.iterations, 0, 100000);
     s.solver.substeps = sv.integer("substeps", s.solver.substeps, 1, 100000);
     s.solver.thickness = sv.number("thickness", s.solver.thickness, 0);
-    s.solver.bendingKernel = sv.choice("bending_kernel", s.solver.bendingKernel, bendingSweepNames());
+    s.solver.kernel = sv.choice("kernel", s.solver.kernel, sweepKernelNames());
     s.solver.threads = sv.integer("threads", s.solver.threads, 0, 1024);
     if (isPositionBased(s.solver.method) && s.model != Model::Cloth)
         sv.fail("method", std::string("\"") + methodName(s.solver.method) + "\" needs model \"cloth\" (got \"" + model + "\")");

@@ -7,34 +7,50 @@
 
 namespace clothlab {
 namespace {
-/// Registered sweeps by name (a function-local static, so registering from a static initialiser
+/// Registered kernels by name (a function-local static, so registering from a static initialiser
 /// of another file is safe).
-std::map<std::string, BendingSweepFactory>& registry() {
-    static std::map<std::string, BendingSweepFactory> sweeps;
-    return sweeps;
+std::map<std::string, SweepKernel>& registry() {
+    static std::map<std::string, SweepKernel> kernels;
+    return kernels;
+}
+
+/// The kernel called `name`, null for "exercise".
+const SweepKernel* findKernel(const std::string& name) {
+    if (name == "exercise") return nullptr;
+    const auto it = registry().find(name);
+    if (it == registry().end()) throw std::out_of_range("no constraint kernel \"" + name + "\" is registered");
+    return &it->second;
+}
+
+/// Kernel `name`'s sweep over `items` if it has a factory for them, else the exercise's sweeps `pbd`
+/// and `xpbd` (sim/sweeps.h) over them.
+template <class Item, class Factory, class Pbd, class Xpbd>
+ConstraintSweep makeSweep(const std::string& name, Factory SweepKernel::*factory, const std::vector<Item>& items,
+                          const SweepPlan& plan, Pbd* pbd, Xpbd* xpbd) {
+    if (const SweepKernel* kernel = findKernel(name); kernel && kernel->*factory) return (kernel->*factory)(items, plan);
+    ConstraintSweep sweep;
+    sweep.pbd = [items, plan, pbd](const VectorX& w, double k, Matrix3X& p) { pbd(items, w, k, p, plan); };
+    sweep.xpbd = [items, plan, xpbd](const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p) {
+        xpbd(items, w, alphaTilde, lambda, p, plan);
+    };
+    return sweep;
 }
 }  // namespace
 
-void registerBendingSweep(const std::string& name, BendingSweepFactory make) { registry()[name] = std::move(make); }
+void registerSweepKernel(const std::string& name, SweepKernel kernel) { registry()[name] = std::move(kernel); }
 
-std::vector<std::string> bendingSweepNames() {
+std::vector<std::string> sweepKernelNames() {
     std::vector<std::string> names = {"exercise"};
-    for (const auto& [name, make] : registry()) names.push_back(name);
+    for (const auto& [name, kernel] : registry()) names.push_back(name);
     return names;
 }
 
-BendingSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils, const SweepPlan& plan) {
-    if (name == "exercise") {
-        BendingSweep sweep;
-        sweep.pbd = [stencils, plan](const VectorX& w, double k, Matrix3X& p) { projectBendingSweep(stencils, w, k, p, plan); };
-        sweep.xpbd = [stencils, plan](const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p) {
-            projectBendingSweepXpbd(stencils, w, alphaTilde, lambda, p, plan);
-        };
-        return sweep;
-    }
-    const auto it = registry().find(name);
-    if (it == registry().end()) throw std::out_of_range("no bending sweep \"" + name + "\" is registered");
-    return it->second(stencils, plan);
+ConstraintSweep makeDistanceSweep(const std::string& name, const std::vector<DistanceLink>& links, const SweepPlan& plan) {
+    return makeSweep(name, &SweepKernel::distance, links, plan, projectDistanceSweep, projectDistanceSweepXpbd);
+}
+
+ConstraintSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils, const SweepPlan& plan) {
+    return makeSweep(name, &SweepKernel::bending, stencils, plan, projectBendingSweep, projectBendingSweepXpbd);
 }
 
 }  // namespace clothlab

@@ -43,6 +43,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         linkPlan_ = sweepPlan(ordered, P_.size(), threads_);  // the colour groups, swept in parallel
         linkLambda_.assign(links_.size(), 0.0);
         if (!xpbd_) kDistance_ = iterationStiffness(scene.constraints.distance.stiffness, sv.iterations);
+        distanceSweep_ = makeDistanceSweep(sv.kernel, links_, linkPlan_);  // "exercise": exercise 4.3
     }
     if (scene.constraints.bending.enabled) {
         bendingPass_ = timer_.add("constraints: bending");
@@ -57,7 +58,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         stencilPlan_ = sweepPlan(ordered, P_.size(), threads_);
         bendLambda_.assign(stencils_.size(), 0.0);
         if (!xpbd_) kBending_ = iterationStiffness(scene.constraints.bending.stiffness, sv.iterations);
-        bendingSweep_ = makeBendingSweep(sv.bendingKernel, stencils_, stencilPlan_);  // "exercise": exercise 5.2
+        bendingSweep_ = makeBendingSweep(sv.kernel, stencils_, stencilPlan_);  // "exercise": exercise 5.2
     }
     if (!scene.colliders.empty()) {
         generatePass_ = timer_.add("collisions: generate");
@@ -159,8 +160,8 @@ void PbdSimulation::projectConstraints(Matrix3X& p) {
     const double dt2 = subDt_ * subDt_;
     if (distancePass_ >= 0) {
         auto timed = timer_.time(distancePass_);
-        if (xpbd_) projectDistanceSweepXpbd(links_, w, scene_.constraints.distance.compliance / dt2, linkLambda_, p, linkPlan_);
-        else projectDistanceSweep(links_, w, kDistance_, p, linkPlan_);
+        if (xpbd_) distanceSweep_.xpbd(w, scene_.constraints.distance.compliance / dt2, linkLambda_, p);
+        else distanceSweep_.pbd(w, kDistance_, p);
     }
     if (bendingPass_ >= 0) {
         auto timed = timer_.time(bendingPass_);

@@ -191,9 +191,9 @@ struct SolverSpec {
     int iterations = 10;    ///< PBD solver iterations per step
     int substeps = 1;       ///< PBD substeps per step
     double thickness = 0.01;///< collision thickness h, m
-    /// PBD bending sweep: "exercise" calls exercise 5.2 per stencil (the student's or the reference
-    /// code); any other name is a sweep registered with registerBendingSweep() (sim/extensions.h)
-    std::string bendingKernel = "exercise";
+    /// PBD/XPBD constraint sweeps: "exercise" calls exercises 4.3 and 5.2 per constraint (the student's
+    /// or the reference code); any other name is a kernel registered with registerSweepKernel() (sim/extensions.h)
+    std::string kernel = "exercise";
     int threads = 0;        ///< threads that sweep a colour group / compute forces (0: all cores, 1: serial)
 };
 

@@ -84,7 +84,8 @@ private:
     SweepPlan linkPlan_, stencilPlan_;       ///< colour groups of links_ and stencils_
     std::vector<DistanceLink> links_;        ///< distance constraints
     std::vector<BendingStencil> stencils_;   ///< bending constraints
-    BendingSweep bendingSweep_;              ///< PBD and XPBD bending sweeps over stencils_ (extensions.h)
+    ConstraintSweep distanceSweep_;          ///< PBD and XPBD distance sweeps over links_ (extensions.h)
+    ConstraintSweep bendingSweep_;           ///< PBD and XPBD bending sweeps over stencils_ (extensions.h)
     std::vector<double> linkLambda_;         ///< XPBD multipliers of the links
     std::vector<double> bendLambda_;         ///< XPBD multipliers of the stencils
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step
