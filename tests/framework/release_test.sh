@@ -85,7 +85,7 @@ for s in scenes/*.json; do
   grep -q "./lab hint $nn\.[0-9]" "$tmp/run.log" && grep -q -- "./lab build --reference 0$nn)" "$tmp/run.log" \
     || fail "$s in the copy: advice $(tail -1 "$tmp/run.log")"
 done
-# The instructors' batched bending kernel is not in the copy (nothing registers it at the solver's
+# The instructors' batched kernel is not in the copy (nothing registers it at the solver's
 # extension point): asking for it is one clear input error that lists what there is.
 "$CLOTHLAB_BUILD/bin/clothlab" run scenes/pbd_hanging.json --set solver.kernel=batched --steps 5 >"$tmp/run.log" 2>&1
 code=$?
