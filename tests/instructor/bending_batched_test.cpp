@@ -15,6 +15,7 @@
 #include "clothlab/core/input_error.h"
 #include "clothlab/io/scene_json.h"
 #include "clothlab/sim/pbd.h"
+#include "crumpled_cloth.h"
 
 #if __has_include("bending_batched.h")
 #include "bending_batched.h"
@@ -22,9 +23,7 @@
 using namespace clothlab;
 
 namespace {
-Scene hangingScene(const std::vector<std::string>& sets) {
-    return loadScene(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/pbd_hanging.json", sets);
-}
+using test::hangingScene;
 
 // The stencils of an n x n cloth in the solver's order, its inverse masses (some pinned, masses
 // spread over three orders of magnitude) and crumpled positions: every stencil has work to do.
@@ -36,14 +35,10 @@ struct CrumpledCloth {
         const PbdSimulation sim(hangingScene({"cloth.nx=" + std::to_string(n), "cloth.ny=" + std::to_string(n)}));
         stencils = sim.bendingStencilList();
         std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
         w = sim.state().w;
-        for (int i = 0; i < w.size(); ++i)
-            if (w[i] > 0.0) w[i] *= std::pow(10.0, 1.5 * u(rng));
         p = sim.state().x;
-        const double h = 1.0 / (n - 1);  // edge length, m
-        for (int i = 0; i < p.cols(); ++i)
-            for (int c = 0; c < 3; ++c) p(c, i) += 0.3 * h * u(rng);
+        test::crumple(w, p, 1.0 / (n - 1), rng);  // the edge length is 1/(n − 1) m
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
         for (auto& s : stencils) s.phi0 += 0.3 * u(rng);
     }
 };
@@ -266,11 +261,7 @@ TEST(BendingBatched, XpbdSweepMatchesTheExerciseXpbdSweep) {
                 const double moved = (ref - c.p).cwiseAbs().maxCoeff();
                 EXPECT_GT(moved, 1e-3) << "the sweeps must move the cloth";
                 EXPECT_LE((fast - ref).cwiseAbs().maxCoeff(), 1e-10);
-                double lambdaMax = 0.0, lambdaDiff = 0.0;
-                for (size_t n = 0; n < c.stencils.size(); ++n) {
-                    lambdaMax = std::max(lambdaMax, std::fabs(lambdaRef[n]));
-                    lambdaDiff = std::max(lambdaDiff, std::fabs(lambdaFast[n] - lambdaRef[n]));
-                }
+                const auto [lambdaMax, lambdaDiff] = test::largestAndDifference(lambdaRef, lambdaFast);
                 EXPECT_GT(lambdaMax, 0.0);
                 EXPECT_LE(lambdaDiff, 1e-9 * lambdaMax);
             }

@@ -11,6 +11,7 @@
 
 #include "clothlab/io/scene_json.h"
 #include "clothlab/sim/pbd.h"
+#include "crumpled_cloth.h"
 
 #if __has_include("distance_batched.h")
 #include "distance_batched.h"
@@ -18,9 +19,7 @@
 using namespace clothlab;
 
 namespace {
-Scene hangingScene(const std::vector<std::string>& sets) {
-    return loadScene(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/pbd_hanging.json", sets);
-}
+using test::hangingScene;
 
 // The links of an n x n cloth in the solver's colour order with its plan (2 threads), masses spread
 // over three orders of magnitude (the solver's pins stay pinned) and positions moved by up to 30 % of
@@ -37,14 +36,9 @@ struct CrumpledLinks {
         links = sim.distanceLinks();
         plan = sim.distancePlan();
         std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
         w = sim.state().w;
-        for (int i = 0; i < w.size(); ++i)
-            if (w[i] > 0.0) w[i] *= std::pow(10.0, 1.5 * u(rng));
         p = sim.state().x;
-        const double h = 1.0 / (n - 1);
-        for (int i = 0; i < p.cols(); ++i)
-            for (int c = 0; c < 3; ++c) p(c, i) += 0.3 * h * u(rng);
+        test::crumple(w, p, 1.0 / (n - 1), rng);  // the edge length is 1/(n − 1) m
         p.col(1) = p.col(0);
         w[links.back().i] = w[links.back().j] = 0.0;  // both ends pinned
     }
@@ -89,11 +83,7 @@ TEST(DistanceBatched, XpbdSweepMatchesTheExerciseXpbdSweep) {
         ASSERT_TRUE(fast.allFinite());
         EXPECT_GT((ref - c.p).cwiseAbs().maxCoeff(), 1e-3) << "the sweeps must move the cloth";
         EXPECT_LE((fast - ref).cwiseAbs().maxCoeff(), 1e-13);
-        double lambdaMax = 0.0, lambdaDiff = 0.0;
-        for (size_t n = 0; n < c.links.size(); ++n) {
-            lambdaMax = std::max(lambdaMax, std::fabs(lambdaRef[n]));
-            lambdaDiff = std::max(lambdaDiff, std::fabs(lambdaFast[n] - lambdaRef[n]));
-        }
+        const auto [lambdaMax, lambdaDiff] = test::largestAndDifference(lambdaRef, lambdaFast);
         EXPECT_GT(lambdaMax, 0.0);
         EXPECT_LE(lambdaDiff, 1e-12 * lambdaMax);
     }
