@@ -28,12 +28,13 @@ template <class Item, class Factory, class Pbd, class Xpbd>
 ConstraintSweep makeSweep(const std::string& name, Factory SweepKernel::*factory, const std::vector<Item>& items,
                           const SweepPlan& plan, Pbd* pbd, Xpbd* xpbd) {
     if (const SweepKernel* kernel = findKernel(name); kernel && kernel->*factory) return (kernel->*factory)(items, plan);
-    ConstraintSweep sweep;
-    sweep.pbd = [items, plan, pbd](const VectorX& w, double k, Matrix3X& p) { pbd(items, w, k, p, plan); };
-    sweep.xpbd = [items, plan, xpbd](const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p) {
-        xpbd(items, w, alphaTilde, lambda, p, plan);
-    };
-    return sweep;
+    using Listed = std::pair<std::vector<Item>, SweepPlan>;  // the constraints and their plan
+    return sweepOver(
+        Listed(items, plan),
+        [pbd](const Listed& c, const VectorX& w, double k, Matrix3X& p) { pbd(c.first, w, k, p, c.second); },
+        [xpbd](const Listed& c, const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p) {
+            xpbd(c.first, w, alphaTilde, lambda, p, c.second);
+        });
 }
 }  // namespace
 

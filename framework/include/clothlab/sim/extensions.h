@@ -9,7 +9,9 @@
 /// there only "exercise" is allowed.
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "clothlab/exercise/05_bending.h"
@@ -28,6 +30,24 @@ struct ConstraintSweep {
     /// projectDistanceSweepXpbd() or projectBendingSweepXpbd().
     std::function<void(const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p)> xpbd;
 };
+
+/// The sweep over `data`, which is built once and shared by both forms (a kernel's precomputed arrays,
+/// say): ConstraintSweep::pbd calls pbd(data, w, k, p) and ConstraintSweep::xpbd calls
+/// xpbd(data, w, α̃, λ, p).
+/// @param data  what both forms sweep over (moved into shared storage)
+/// @param pbd   callable (const Data&, const VectorX& w, double k, Matrix3X& p)
+/// @param xpbd  callable (const Data&, const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p)
+/// @return      the sweep
+template <class Data, class Pbd, class Xpbd>
+ConstraintSweep sweepOver(Data data, Pbd pbd, Xpbd xpbd) {
+    auto shared = std::make_shared<const Data>(std::move(data));
+    ConstraintSweep sweep;
+    sweep.pbd = [shared, pbd](const VectorX& w, double k, Matrix3X& p) { pbd(*shared, w, k, p); };
+    sweep.xpbd = [shared, xpbd](const VectorX& w, double alphaTilde, std::vector<double>& lambda, Matrix3X& p) {
+        xpbd(*shared, w, alphaTilde, lambda, p);
+    };
+    return sweep;
+}
 
 /// A kernel: what makes its sweeps for a list of constraints, projected in the given order, with
 /// their colour groups and threads (a factory may precompute whatever it needs from them once). The
