@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -25,6 +26,15 @@ namespace clothlab {
 namespace {
 constexpr size_t kHistory = 300;  // samples in each plot
 const ImVec4 kRed(0.85f, 0.15f, 0.12f, 1.0f);
+
+// Whether the key for character c (lower case) was typed this frame, in either case. The app reads
+// typed characters, which Dear ImGui has queued the same way in every release Debian ships (1.86 in
+// Debian 12, 1.90 in Debian 13), instead of key codes, whose API changed between those releases.
+bool typedKey(char c) {
+    for (const ImWchar ch : ImGui::GetIO().InputQueueCharacters)
+        if (ch == static_cast<ImWchar>(c) || ch == static_cast<ImWchar>(std::toupper(static_cast<unsigned char>(c)))) return true;
+    return false;
+}
 
 void push(std::deque<float>& q, double v) {
     q.push_back(static_cast<float>(v));
@@ -259,7 +269,7 @@ void App::handleMouse(int width, int height) {
     const bool over_ui = io.WantCaptureMouse && grabbed_ < 0 && !orbiting_;
     if (!over_ui) {
         if (io.MouseWheel != 0) cam_.zoom(std::pow(0.9, io.MouseWheel));
-        const bool pin_key = !io.WantCaptureKeyboard && ImGui::IsKeyPressed('P', false);
+        const bool pin_key = !io.WantCaptureKeyboard && typedKey('p');
         if ((ImGui::IsMouseClicked(1) || pin_key) && sim_) {
             const int i = pickParticle(makeDrawData(*sim_), cam_, px, py, width, height, 14);
             if (i >= 0) {
@@ -305,9 +315,9 @@ void App::handleMouse(int width, int height) {
         else orbiting_ = false;
     }
     if (!io.WantCaptureKeyboard) {
-        if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) playing_ = !playing_;
-        if (ImGui::IsKeyPressed('S', false)) stepOnce();
-        if (ImGui::IsKeyPressed('R', false)) rebuild(false);
+        if (typedKey(' ')) playing_ = !playing_;
+        if (typedKey('s')) stepOnce();
+        if (typedKey('r')) rebuild(false);
     }
 }
 
