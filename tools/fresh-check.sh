@@ -11,26 +11,32 @@
 # (bound with --rbind and made slaves, so unmounting them never unmounts the host's). Inside a
 # chroot the kernel refuses new user namespaces, so the grader takes its root-mode path there.
 #
+# With --devcontainer the root starts as bare as the image the dev container builds on (debootstrap
+# minbase, nothing included) and is then set up by the instructions of .devcontainer/Dockerfile (COPY,
+# RUN, ENV) executed in order, as a container engine would; the two commands run after that, and the
+# browser desktop (clothlab-desktop) must answer on port 6080. No container engine is needed.
+#
 # It needs root, debootstrap and a reachable Debian mirror (the one apt uses here, or
 # CLOTHLAB_MIRROR). It takes 15-30 minutes per release on 2 cores: it is not part of ./lab test.
 set -euo pipefail
-ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+ROOT=${CLOTHLAB_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 
 die() { printf 'error: %s\n' "$*" >&2; exit 1; }
 say() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
 
-release="" keep=0 only=(demo test)
+release="" keep=0 only=(demo test) devcontainer=0
 while (($#)); do
   case $1 in
     --keep) keep=1; shift ;;
+    --devcontainer) devcontainer=1; shift ;;
     --only) [[ ${2:-} == demo || ${2:-} == test ]] || die "fresh-check: --only: demo or test, not '${2:-}'"; only=("$2"); shift 2 ;;
-    -*) die "fresh-check: unknown option $1 (usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test])" ;;
+    -*) die "fresh-check: unknown option $1 (usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test] [--devcontainer])" ;;
     *) [[ -z $release ]] || die "fresh-check: one release at a time"; release=$1; shift ;;
   esac
 done
 case $release in
   bookworm|trixie) ;;
-  "") die "fresh-check: usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test]" ;;
+  "") die "fresh-check: usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test] [--devcontainer]" ;;
   *) die "fresh-check: release '$release': bookworm (Debian 12) or trixie (Debian 13)" ;;
 esac
 [[ $(id -u) -eq 0 ]] || die "fresh-check: needs root (debootstrap, chroot and mounts)"
@@ -48,6 +54,12 @@ fi
 mapfile -t base < <(grep -v -E '^\s*(#|$)' "$ROOT/tools/base-packages.txt")
 work=${CLOTHLAB_FRESH_DIR:-/var/tmp/clothlab-fresh}
 target=$work/$release
+label=$release
+if ((devcontainer)); then
+  [[ $release == trixie ]] || die "fresh-check: --devcontainer: the dev container is Debian 13 (trixie)"
+  base=()  # the image's own packages only: the Dockerfile installs the rest
+  target=$work/$release-devcontainer label="$release (dev container)"
+fi
 commit=$(git -C "$ROOT" rev-parse --short HEAD)
 mkdir -p "$work"
 
@@ -71,11 +83,12 @@ if [[ -d $target ]]; then
   rm -rf --one-file-system "$target"
 fi
 
-say "fresh-check $release: debootstrap --variant=minbase --include=$(IFS=,; echo "${base[*]}") from $mirror"
+include=(); ((${#base[@]})) && include=(--include="$(IFS=,; echo "${base[*]}")")
+say "fresh-check $label: debootstrap --variant=minbase ${include[*]} from $mirror"
 t0=$(date +%s)
-debootstrap --variant=minbase --include="$(IFS=,; echo "${base[*]}")" "$release" "$target" "$mirror" \
+debootstrap --variant=minbase "${include[@]}" "$release" "$target" "$mirror" \
   >"$work/$release.debootstrap.log" 2>&1 || { tail -20 "$work/$release.debootstrap.log" >&2; die "fresh-check: debootstrap failed (log: $work/$release.debootstrap.log)"; }
-say "fresh-check $release: root made in $(($(date +%s) - t0)) s"
+say "fresh-check $label: root made in $(($(date +%s) - t0)) s"
 
 # The committed tree only: a clone of HEAD, as a student gets it.
 git clone -q --no-local --no-hardlinks "$ROOT" "$target/root/clothlab"
@@ -90,15 +103,44 @@ for d in sys dev; do
 done
 cp -L /etc/resolv.conf "$target/etc/resolv.conf" 2>/dev/null || true
 
+# dockerfile_steps: the Dockerfile's COPY, RUN and ENV instructions in order, in the root (its build
+# context is the repository, as devcontainer.json says); continuation lines joined.
+dockerfile_steps() {
+  local df=$target/root/clothlab/.devcontainer/Dockerfile kw rest envs=() n=0
+  while IFS= read -r line; do
+    [[ $line =~ ^[[:space:]]*(#|$) ]] && continue
+    kw=${line%% *} rest=${line#* }
+    n=$((n + 1))
+    case $kw in
+      FROM) ;;
+      COPY) read -r -a words <<<"$rest"
+            mkdir -p "$target$(dirname "${words[1]}")"
+            cp -a "$target/root/clothlab/${words[0]}" "$target${words[1]}" ;;
+      ENV) envs+=("$rest") ;;
+      RUN) say "Dockerfile: RUN $rest"
+           chroot "$target" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+             DEBIAN_FRONTEND=noninteractive "${envs[@]}" sh -c "$rest" >>"$work/$release.dockerfile.log" 2>&1 \
+             || { tail -20 "$work/$release.dockerfile.log" >&2; die "fresh-check: .devcontainer/Dockerfile: RUN $rest: failed (log: $work/$release.dockerfile.log)"; } ;;
+      *) die "fresh-check: .devcontainer/Dockerfile: $kw: an instruction this check does not run" ;;
+    esac
+  done < <(sed -e ':a' -e '/\\$/N; s/\\\n//; ta' "$df")
+}
+
 run_in_root() {  # run_in_root LOG COMMAND...: in the chroot, a clean environment like a login as root
   chroot "$target" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
     LANG=C.UTF-8 TERM=dumb CI=true bash -c "cd /root/clothlab && $*" >"$1" 2>&1
 }
 
+if ((devcontainer)); then
+  t0=$(date +%s)
+  dockerfile_steps
+  say "fresh-check $label: the Dockerfile's steps took $(($(date +%s) - t0)) s"
+fi
+
 results=()
 pretty=$(awk -F= '$1 == "PRETTY_NAME" { gsub(/"/, "", $2); print $2 }' "$target/etc/os-release")
 for c in "${only[@]}"; do
-  log=$work/$release.$c.log
+  log=$work/$release$( ((devcontainer)) && echo -devcontainer).$c.log
   say "fresh-check $release: ./lab $c (log: $log)"
   t0=$(date +%s)
   status=0
@@ -106,10 +148,27 @@ for c in "${only[@]}"; do
   secs=$(($(date +%s) - t0))
   verdict=passed; ((status == 0)) || verdict=failed
   tail_line=$(grep -E 'tests passed|tests failed' "$log" | tail -1 || true)
-  results+=("$release	$pretty	./lab $c	$secs	$status	$verdict	${tail_line:-}")
-  printf '%s\t%s\t./lab %s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%F)" "$release" "$c" "$secs" "$status" "$verdict" "$commit" "${tail_line:-}" >>"$work/results.tsv"
+  results+=("$label	$pretty	./lab $c	$secs	$status	$verdict	${tail_line:-}")
+  printf '%s\t%s\t./lab %s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%F)" "$label" "$c" "$secs" "$status" "$verdict" "$commit" "${tail_line:-}" >>"$work/results.tsv"
   ((status == 0)) || tail -30 "$log" >&2
 done
+
+if ((devcontainer)); then  # the browser desktop answers on port 6080
+  chroot "$target" /usr/bin/env -i PATH=/usr/local/bin:/usr/bin:/bin HOME=/root clothlab-desktop >"$work/$release.desktop.log" 2>&1 || true
+  status=1
+  for _ in $(seq 30); do
+    if exec 3<>/dev/tcp/127.0.0.1/6080 2>/dev/null; then
+      printf 'GET /vnc.html HTTP/1.0\r\n\r\n' >&3
+      head -1 <&3 | grep -q ' 200 ' && status=0
+      exec 3<&-
+      break
+    fi
+    sleep 1
+  done
+  for p in /proc/[0-9]*; do [[ $(readlink "$p/root" 2>/dev/null) == "$target" ]] && kill "${p#/proc/}" 2>/dev/null; done
+  verdict=passed; ((status == 0)) || verdict=failed
+  results+=("$label	$pretty	desktop :6080	0	$status	$verdict	noVNC's vnc.html served")
+fi
 
 echo
 printf '%-10s %-32s %-12s %10s %6s  %s\n' release system command "wall time" exit result
