@@ -140,7 +140,7 @@ fi
 results=()
 pretty=$(awk -F= '$1 == "PRETTY_NAME" { gsub(/"/, "", $2); print $2 }' "$target/etc/os-release")
 for c in "${only[@]}"; do
-  log=$work/$release$( ((devcontainer)) && echo -devcontainer).$c.log
+  log=$work/${target##*/}.$c.log
   say "fresh-check $release: ./lab $c (log: $log)"
   t0=$(date +%s)
   status=0
