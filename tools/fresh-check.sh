@@ -127,8 +127,9 @@ dockerfile_steps() {
 }
 
 run_in_root() {  # run_in_root LOG COMMAND...: in the chroot, a clean environment like a login as root
+  local log=$1; shift
   chroot "$target" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-    LANG=C.UTF-8 TERM=dumb CI=true bash -c "cd /root/clothlab && $*" >"$1" 2>&1
+    LANG=C.UTF-8 TERM=dumb CI=true bash -c "cd /root/clothlab && $*" >"$log" 2>&1
 }
 
 if ((devcontainer)); then
