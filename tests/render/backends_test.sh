@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The same frames through both offscreen backends: clothlab-render (OSMesa) and clothlab-render-egl
 # (EGL surfaceless) render two frames of a scene and the app with its panels at fixed sizes, and the
-# pictures must agree: mean difference at most 0.5/255 per channel and at most 0.1 % of the pixels
-# with a channel off by more than 32 (both are Mesa's llvmpipe: measured identical, docs/render.md).
+# pictures must agree (docs/render.md): the scene's frames within a mean difference of 0.5/255 per
+# channel and at most 0.1 % of the pixels with a channel off by more than 32 (both are Mesa's
+# llvmpipe: measured 0.003/255 and 0.003 %, a few edge pixels); the app within 1/255 and 0.5 %, as its
+# panel shows the wall time per step, which differs from run to run.
 # Each program prints its one "renderer:" line; with no EGL driver, one "error: renderer:" line.
 set -u
 osmesa=$1; egl=$2; check=$3; root=$4; tmp=$5
@@ -28,7 +30,7 @@ done
 for f in frame_0000.png frame_0001.png; do
   "$check" --compare-images "$tmp/osmesa/$f" "$tmp/egl/$f" 0.5 0.001 || bad "$f differs between OSMesa and EGL"
 done
-"$check" --compare-images "$tmp/osmesa-app.png" "$tmp/egl-app.png" 0.5 0.001 || bad "the app screenshot differs between OSMesa and EGL"
+"$check" --compare-images "$tmp/osmesa-app.png" "$tmp/egl-app.png" 1 0.005 || bad "the app screenshot differs between OSMesa and EGL"
 "$check" --check-app-screenshot "$tmp/egl-app.png" || bad "EGL app screenshot content"
 
 # No EGL driver (GLVND finds no vendor library): one error line, exit code 4, no crash.
