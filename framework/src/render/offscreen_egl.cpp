@@ -48,9 +48,11 @@ EGLDisplay openDisplay(std::string& platform) {
     auto getDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!getDisplay) throw OffscreenError("EGL: no eglGetPlatformDisplayEXT (EGL_EXT_platform_base)");
     EGLint major = 0, minor = 0;
+    std::string surfaceless_failed;  // why the surfaceless platform, offered, did not work
     if (hasExtension(client, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay d = getDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) return platform = "surfaceless", d;
+        surfaceless_failed = eglFailure("eglInitialize on the surfaceless platform");
     }
     auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     EGLDeviceEXT device = nullptr;
@@ -60,6 +62,7 @@ EGLDisplay openDisplay(std::string& platform) {
         if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) return platform = "device", d;
         throw OffscreenError(eglFailure("eglInitialize on the first EGL device"));
     }
+    if (!surfaceless_failed.empty()) throw OffscreenError(surfaceless_failed);
     throw OffscreenError("EGL: neither the surfaceless platform (EGL_MESA_platform_surfaceless) nor an EGL device "
                          "(EGL_EXT_platform_device) is available (is libegl-mesa0 installed?)");
 }

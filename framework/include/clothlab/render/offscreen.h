@@ -32,6 +32,7 @@ public:
     /// @param width, height  buffer size in pixels
     /// @throws OffscreenError when the backend cannot create or bind a context
     OffscreenContext(int width, int height);
+    /// Destroys the context and its buffers (EGL: the display stays initialised for other contexts).
     ~OffscreenContext();
     OffscreenContext(const OffscreenContext&) = delete;
     OffscreenContext& operator=(const OffscreenContext&) = delete;
