@@ -1,7 +1,11 @@
-// clothlab-render: offscreen pictures through OSMesa (no display needed).
+// clothlab-render (OSMesa) and clothlab-render-egl (EGL surfaceless): offscreen pictures, no display
+// needed. One source, two programs: each links one backend of render/offscreen.h; ./lab picks one.
 //   render SCENE [--seconds T] [--fps F] --out DIR [--video FILE.mp4]   frames of a simulated scene
 //   gui [SCENE] --screenshot FILE.png [--frames N]                       the whole app, panels included
 //   bench [--n 32] [--frames 60]                                         app frames per second on an n x n cloth
+//   probe                                                                can this backend make a context here?
+// Each run prints one line "renderer: OSMesa (llvmpipe)" or "renderer: EGL surfaceless (llvmpipe)";
+// when no context can be made: one line "error: renderer: ..." and exit code 4.
 #include <imgui.h>
 #include <backends/imgui_impl_opengl2.h>
 
@@ -12,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/sim/run.h"
@@ -37,7 +42,7 @@ namespace {
 
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-// An ImGui context drawing into the current (OSMesa) GL context.
+// An ImGui context drawing into the current (offscreen) GL context.
 struct OffscreenImGui {
     OffscreenImGui(int w, int h) {
         ImGui::CreateContext();
@@ -60,6 +65,13 @@ struct OffscreenImGui {
     }
 };
 
+// The offscreen context, with the one "renderer:" line of the run.
+std::unique_ptr<OffscreenContext> makeContext(int w, int h) {
+    auto ctx = std::make_unique<OffscreenContext>(w, h);
+    std::cout << "renderer: " << ctx->description() << std::endl;
+    return ctx;
+}
+
 void parseSize(const std::string& s, int& w, int& h) {
     if (std::sscanf(s.c_str(), "%dx%d", &w, &h) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192)
         throw InputError("command line", "--size", "expected WIDTHxHEIGHT, e.g. 960x540 (got \"" + s + "\")");
@@ -78,6 +90,7 @@ int runRender(const RenderArgs& a) {
     parseSize(a.size, W, H);
     const Scene scene = loadScene(a.scene, a.sets);
     auto sim = makeSimulation(scene);
+    auto ctx = makeContext(W, H);  // before simulating: no context, no point in simulating
     const double dt = scene.solver.dt;
     const double T = a.seconds >= 0 ? a.seconds : scene.solver.steps * dt;
     // Frame f shows the state after round(f / (fps dt)) steps, so the clip keeps time with the simulation.
@@ -139,7 +152,6 @@ int runRender(const RenderArgs& a) {
 
     // 3) Render.
     std::filesystem::create_directories(a.out);
-    OffscreenContext ctx(W, H);
     OffscreenImGui gui(W, H);
     Renderer renderer;
     std::unique_ptr<VideoWriter> video;
@@ -155,7 +167,7 @@ int runRender(const RenderArgs& a) {
         gui.begin(1.0 / a.fps);
         drawOverlay(shots[f], opt);
         gui.end();
-        const Image img = ctx.read();
+        const Image img = ctx->read();
         draw_s += seconds(d0, Clock::now());
         char name[32];
         std::snprintf(name, sizeof name, "/frame_%04zu.png", f);
@@ -188,7 +200,7 @@ struct GuiArgs {
 int runGui(const GuiArgs& a) {
     int W, H;
     parseSize(a.size, W, H);
-    OffscreenContext ctx(W, H);
+    auto ctx = makeContext(W, H);
     OffscreenImGui gui(W, H);
     AppOptions o;
     o.scene = a.scene;
@@ -208,10 +220,10 @@ int runGui(const GuiArgs& a) {
         gui.end();
         glFinish();
     }
-    const Image img = ctx.read();
+    const Image img = ctx->read();
     const double s = seconds(t0, Clock::now()), n = frames - warm;
     std::cout << "app frame " << W << "x" << H << (a.wave > 1 ? ", " + std::to_string(a.wave) + "x" + std::to_string(a.wave) + " cloth" : "")
-                  << ": " << 1000 * s / n << " ms per frame (" << n / s << " fps, OSMesa)\n";
+                  << ": " << 1000 * s / n << " ms per frame (" << n / s << " fps, " << ctx->description() << ")\n";
     if (!a.screenshot.empty()) {
         writePng(a.screenshot, img);
         std::cout << "wrote " << a.screenshot << " (" << W << "x" << H << ", " << a.frames << " frames)\n";
@@ -224,7 +236,7 @@ int runGui(const GuiArgs& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App cli{"clothlab-render — offscreen rendering (OSMesa): frames, videos, app screenshots"};
+    CLI::App cli{"clothlab-render, clothlab-render-egl — offscreen rendering (OSMesa, EGL): frames, videos, app screenshots"};
     cli.require_subcommand(1);
     int code = 0;
 
@@ -256,7 +268,7 @@ int main(int argc, char** argv) {
 
     GuiArgs ba;
     ba.frames = 60;
-    auto* b = cli.add_subcommand("bench", "Frames per second of the app drawing an n x n cloth (OSMesa)");
+    auto* b = cli.add_subcommand("bench", "Frames per second of the app drawing an n x n cloth (offscreen)");
     b->add_option("--n", ba.wave, "Cloth size n (particles per side)")->check(CLI::Range(2, 1024));
     b->add_option("--frames", ba.frames, "Frames to time")->check(CLI::Range(1, 100000));
     b->add_option("--size", ba.size, "Window size WIDTHxHEIGHT");
@@ -268,6 +280,9 @@ int main(int argc, char** argv) {
         code = runGui(ba);
     });
 
+    cli.add_subcommand("probe", "Make a small offscreen context, print the renderer line, exit 0 if it works")
+        ->callback([] { makeContext(16, 16); });
+
     try {
         cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -275,6 +290,9 @@ int main(int argc, char** argv) {
     } catch (const InputError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
+    } catch (const OffscreenError& e) {
+        std::cerr << "error: renderer: " << e.what() << "\n";
+        return 4;
     } catch (const NotImplemented& e) {
         std::cerr << e.what() << clothlab::cli::stubAdvice(e.what()) << "\n";
         return 2;

@@ -1,4 +1,5 @@
-// Render tests (offscreen through OSMesa; not graded). A cloth grid built here from core/grid.h,
+// Render tests (offscreen: render_test through OSMesa where it is built, render_test_egl through EGL;
+// not graded). A cloth grid built here from core/grid.h,
 // no simulation: pixels where the projected cloth is, background elsewhere, both faces shaded,
 // determinism, and a stored reference picture within a tolerance that survives Mesa versions.
 #include <gtest/gtest.h>
@@ -248,7 +249,7 @@ TEST(Image, PngRoundTrip) {
     EXPECT_TRUE(back.width == 3 && back.height == 2 && back.rgba == img.rgba);
 }
 
-// An OSMesa context with ImGui and its OpenGL2 backend, torn down at the end of the scope.
+// An offscreen context (OSMesa or EGL) with ImGui and its OpenGL2 backend, torn down at the end of the scope.
 struct OffscreenImGui {
     OffscreenContext ctx;
     OffscreenImGui(int w, int h) : ctx(w, h) {
@@ -422,8 +423,35 @@ static int checkAppScreenshot(const char* path) {
     return ok ? 0 : 1;
 }
 
+// `render_test --compare-images A.png B.png MEAN BAD`: the same frame through two backends (OSMesa and
+// EGL, tests/render/backends_test.sh). Prints the mean difference per channel (0..255), the fraction
+// of pixels with a channel off by more than 32 and the largest channel difference; passes when the
+// sizes agree, the mean is at most MEAN and the fraction at most BAD.
+static int compareImageFiles(const char* a_path, const char* b_path, double max_mean, double max_bad) {
+    try {
+        const Image a = readPng(a_path), b = readPng(b_path);
+        if (a.width != b.width || a.height != b.height) {
+            std::cerr << a_path << " is " << a.width << "x" << a.height << ", " << b_path << " is " << b.width << "x"
+                      << b.height << "\n";
+            return 1;
+        }
+        const ImageDiff d = compareImages(a, b, 32);
+        int largest = 0;
+        for (size_t i = 0; i < a.rgba.size(); ++i)
+            if (i % 4 != 3) largest = std::max(largest, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+        std::cout << "compare " << a_path << " " << b_path << ": mean " << d.mean << "/255, "
+                  << 100 * d.bad_fraction << " % pixels off by > 32, largest channel difference " << largest << "\n";
+        return d.mean <= max_mean && d.bad_fraction <= max_bad ? 0 : 1;
+    } catch (const std::exception& e) {
+        std::cerr << e.what() << "\n";
+        return 1;
+    }
+}
+
 int main(int argc, char** argv) {
     if (argc == 3 && std::strcmp(argv[1], "--check-app-screenshot") == 0) return checkAppScreenshot(argv[2]);
+    if (argc == 6 && std::strcmp(argv[1], "--compare-images") == 0)
+        return compareImageFiles(argv[2], argv[3], std::atof(argv[4]), std::atof(argv[5]));
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

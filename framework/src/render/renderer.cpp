@@ -1,4 +1,4 @@
-// The OpenGL renderer (fixed-function pipeline; works in OSMesa and in a GLFW window alike).
+// The OpenGL renderer (fixed-function pipeline; works in OSMesa, EGL and a GLFW window alike).
 #include "clothlab/render/renderer.h"
 
 #include <GL/gl.h>
@@ -493,6 +493,13 @@ Image readPixels(int width, int height) {
     for (int y = 0; y < height; ++y)
         std::copy_n(&raw[(height - 1 - y) * row], row, &img.rgba[y * row]);
     return img;
+}
+
+std::string glRendererName() {
+    const auto* s = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (!s || !*s) return "unknown";
+    const std::string name = s;
+    return name.substr(0, name.find(" ("));
 }
 
 }  // namespace clothlab

@@ -1,7 +1,7 @@
 /// @file app.h
 /// @brief The interactive app: a simulation, its 3-D view and the Dear ImGui panels.
 ///
-/// Platform-free: a GLFW window (clothlab-gui) or an OSMesa buffer (clothlab-render gui --screenshot)
+/// Platform-free: a GLFW window (clothlab-gui) or an offscreen buffer (clothlab-render[-egl] gui --screenshot)
 /// creates the GL context and the ImGui frame and calls App::frame() once per frame.
 #pragma once
 #include <deque>

@@ -1,21 +1,38 @@
 /// @file offscreen.h
-/// @brief An offscreen OpenGL context in memory through OSMesa (no display, no window).
+/// @brief An offscreen OpenGL context in memory (no display, no window): OSMesa or EGL surfaceless.
 ///
-/// Only programs linked with libOSMesa (clothlab-render and the render tests) contain this code.
+/// One class, two implementations, and a program links exactly one of them (one process cannot use
+/// libOSMesa and libGL/libOpenGL together, both define the gl* functions):
+/// - `src/render/offscreen_osmesa.cpp`: an OSMesa context (libOSMesa) in `clothlab-render`;
+/// - `src/render/offscreen_egl.cpp`: an EGL context without a window (libEGL + libOpenGL) on Mesa's
+///   surfaceless platform, or else on the first EGL device, drawing into a framebuffer object, in
+///   `clothlab-render-egl`.
+/// Both give a compatibility-profile context (the fixed-function renderer and ImGui's OpenGL2 backend
+/// need it) with RGBA colour, 24-bit depth and 8-bit stencil; `./lab` picks the program (docs/render.md).
 #pragma once
-#include <vector>
+#include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "clothlab/render/image.h"
 
 namespace clothlab {
 
-/// A compatibility-profile OSMesa context rendering into an RGBA buffer with a 24-bit depth buffer.
+/// No offscreen OpenGL context could be made (no library, no driver, no display); the message names
+/// the backend and the failing call, e.g. "EGL: eglInitialize failed (EGL_NOT_INITIALIZED)".
+class OffscreenError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// A compatibility-profile OpenGL context rendering into an RGBA buffer with a 24-bit depth buffer.
 class OffscreenContext {
 public:
     /// Creates the context and makes it current.
     /// @param width, height  buffer size in pixels
-    /// @throws std::runtime_error when OSMesa cannot create a context
+    /// @throws OffscreenError when the backend cannot create or bind a context
     OffscreenContext(int width, int height);
+    /// Destroys the context and its buffers (EGL: the display stays initialised for other contexts).
     ~OffscreenContext();
     OffscreenContext(const OffscreenContext&) = delete;
     OffscreenContext& operator=(const OffscreenContext&) = delete;
@@ -28,11 +45,15 @@ public:
     void makeCurrent();
     /// Waits for rendering to finish and returns the buffer, top row first.
     Image read();
+    /// The backend and the GL renderer that draw, e.g. "OSMesa (llvmpipe)" or
+    /// "EGL surfaceless (llvmpipe)": what `clothlab-render` prints as its "renderer:" line.
+    const std::string& description() const { return description_; }
 
 private:
-    void* ctx_ = nullptr;                 ///< the OSMesaContext
-    int width_ = 0, height_ = 0;          ///< size
-    std::vector<unsigned char> buffer_;   ///< the colour buffer OSMesa renders into (bottom row first)
+    struct Impl;                   ///< the backend's handles (defined in its .cpp)
+    std::unique_ptr<Impl> impl_;   ///< OSMesa context and buffer, or EGL display, context and framebuffer
+    int width_ = 0, height_ = 0;   ///< size
+    std::string description_;      ///< see description()
 };
 
 }  // namespace clothlab

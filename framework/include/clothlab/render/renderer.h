@@ -1,11 +1,12 @@
 /// @file renderer.h
 /// @brief The OpenGL renderer: cloth surface, spring/constraint overlay, particles, colliders, ground grid.
 ///
-/// Draws into whatever OpenGL context is current (an OSMesa buffer or a GLFW window) with the
+/// Draws into whatever OpenGL context is current (an offscreen one, offscreen.h, or a GLFW window) with the
 /// fixed-function pipeline of OpenGL 1.x/2.x (compatibility profile), which both provide. This code is
 /// compiled once and linked into both programs; it links no GL library itself.
 #pragma once
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "clothlab/render/camera.h"
@@ -81,5 +82,9 @@ Eigen::Vector3f strainColor(double strain, double range);
 /// Reads the current context's colour buffer (width x height) into an image, top row first.
 /// @param width, height  size in pixels
 Image readPixels(int width, int height);
+
+/// GL_RENDERER of the current context up to its first " (", e.g. "llvmpipe" for
+/// "llvmpipe (LLVM 15.0.6, 256 bits)"; "unknown" when there is none.
+std::string glRendererName();
 
 }  // namespace clothlab
