@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ./lab grade --class on a generated class writes the right gradebook. The class mixes the layouts an
-# LMS export or a GitHub Classroom clone gives (nested folders, a .zip with an extra top folder, a
+# LMS export or a clone of each student's repository gives (nested folders, a .zip with an extra top folder, a
 # .tar.gz) and the submissions a course sees: the reference, untouched stubs, typical mistakes, a
 # stage that does not compile, a hostile stage, a missing stage, an unreadable layout. The expected
 # points come from the points files (full or zero) and, for a mistake, from its graded binary that
