@@ -42,7 +42,7 @@ gradescope_fields() {
 for variant in solutions exercises; do
   exe=$build/bin/grade_01_$variant
   [[ -x $exe ]] || fail "no $exe (build grade_01_$variant first)"
-  "$grader" --points-dir "$points" --quiet --stage "01=$exe" --json "$tmp/$variant.json" \
+  "$grader" --points-dir "$points" --quiet --stage "01=$exe" --answers "01=$root/$variant/01_hooke/answers.json" --json "$tmp/$variant.json" \
     --gradescope "$tmp/$variant.gs.json" --markdown "$tmp/$variant.md" >"$tmp/$variant.log" 2>&1 \
     || { tail "$tmp/$variant.log"; fail "clothlab-grade --stage 01=grade_01_$variant"; }
   gradescope_fields "$tmp/$variant.gs.json"
@@ -76,7 +76,7 @@ grep -q "^| 01 | $title01 | does not compile | 0 / $n01 | 0 / $max01 |" "$tmp/br
 # 3. A class (stage 01 only): the gradebooks for Moodle and Canvas beside gradebook.csv, the student
 # identified by the folder name (one with a comma, which CSV must quote).
 mkdir -p "$tmp/class/alice@example.org/01_hooke" "$tmp/class/bob/01_hooke" "$tmp/class/smith, carol/01_hooke"
-cp "$root"/solutions/01_hooke/*.cpp "$tmp/class/alice@example.org/01_hooke/"
+cp "$root"/solutions/01_hooke/* "$tmp/class/alice@example.org/01_hooke/"
 cp "$tmp"/sub/01_hooke/*.cpp "$tmp/class/bob/01_hooke/"
 cp "$root"/exercises/01_hooke/*.cpp "$tmp/class/smith, carol/01_hooke/"
 "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --only 01 --jobs 2 >"$tmp/class.log" 2>&1 \

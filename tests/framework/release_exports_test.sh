@@ -7,7 +7,7 @@
 #  - ./lab release --gradescope: Gradescope's autograder bundle (https://gradescope-autograders.readthedocs.io
 #    /en/latest/specs/: setup.sh and run_autograder at the root of the zip), both executable and
 #    `bash -n` clean, the student copy beside them; run_autograder, tried in a scratch /autograder with
-#    this build's grader, writes results.json for an empty submission and for a missing one.
+#    this build's grader, writes results.json for a submission with a broken stage and for one without stages.
 # Usage: release_exports_test.sh SOURCE_DIR BUILD_DIR
 set -u
 root=$1 build=$2
@@ -53,8 +53,13 @@ for s in steps:
     else:
         print("run", s["run"].replace("\n", " ; "))
 PY
-else  # a structural grep: the lines with uses: or run:
-  grep -E '^ *(- )?(uses|run):' "$wf" | sed -E 's/^ *(- )?//; s/^uses: /uses /; s/^run: /run /' >"$tmp/steps.txt"
+else  # structurally: the uses: and run: lines (a run: | block joined with " ; ")
+  awk 'function flush() { if (inblk) print "run " blk; inblk = 0; blk = "" }
+       inblk { match($0, /^ */); if (RLENGTH > ind || $0 ~ /^ *$/) { sub(/^ +/, ""); if ($0 != "") blk = blk (blk == "" ? "" : " ; ") $0; next } flush() }
+       /^ *(- )?run: [|]/ { match($0, /^ */); ind = RLENGTH; inblk = 1; next }
+       /^ *(- )?run: / { sub(/^ *(- )?run: /, ""); print "run " $0; next }
+       /^ *(- )?uses: / { sub(/^ *(- )?uses: /, ""); print "uses " $0 }
+       END { flush() }' "$wf" >"$tmp/steps.txt"
   grep -q '^ *path: grade.json$' "$wf" && sed -i 's|^uses actions/upload-artifact@v4$|& path=grade.json|' "$tmp/steps.txt"
 fi
 grep -q '^uses actions/checkout@v4' "$tmp/steps.txt" || fail "no checkout step"
@@ -65,14 +70,20 @@ grep -qx 'uses actions/upload-artifact@v4 path=grade.json' "$tmp/steps.txt" || f
 [[ $(grep -c '^uses ' "$tmp/steps.txt") -eq 2 ]] || fail "actions other than checkout and upload-artifact: $(grep '^uses ' "$tmp/steps.txt")"
 
 # run_autograder in a scratch /autograder (the bundle as its source), with this build's grader and kit:
-# an empty submission scores 0 with every test; a missing one gets results.json that says why.
+# a submission whose stage 01 does not compile gets results.json with the compiler's message on stage
+# 01's tests and the other stages not submitted; one without any stage folder gets results.json that
+# says why.
 [[ -f $build/grade-kit/kit.json ]] || fail "no $build/grade-kit/kit.json (build clothlab-grade-kit first)"
-ag=$tmp/autograder; mkdir -p "$ag/submission"; ln -s "$tmp/gs" "$ag/source"
+ag=$tmp/autograder; mkdir -p "$ag/submission/my-repo/exercises/01_hooke"; ln -s "$tmp/gs" "$ag/source"
+cp "$root"/exercises/01_hooke/*.cpp "$ag/submission/my-repo/exercises/01_hooke/"
+echo 'this line is not C++ ;' >>"$ag/submission/my-repo/exercises/01_hooke/hooke.cpp"
 AUTOGRADER_ROOT=$ag CLOTHLAB_BUILD=$build "$tmp/gs/run_autograder" >"$tmp/run.log" 2>&1
-jq -e '.score == 0 and (.tests | length) > 0 and all(.tests[]; .status == "failed" and (.output | contains("not submitted")))' \
-  "$ag/results/results.json" >/dev/null || { tail "$tmp/run.log"; fail "run_autograder on an empty submission: $(head -c 400 "$ag/results/results.json")"; }
-rmdir "$ag/submission"
+jq -e '.score == 0 and (.tests | length) > 0
+       and all(.tests[] | select(.name | startswith("stage 01: ")); .status == "failed" and (.output | test("hooke[.]cpp:[0-9]+:[0-9]+: error")))
+       and all(.tests[] | select(.name | startswith("stage 01: ") | not); .status == "failed" and (.output | contains("not submitted")))' \
+  "$ag/results/results.json" >/dev/null || { tail "$tmp/run.log"; fail "run_autograder on a broken stage 01: $(head -c 400 "$ag/results/results.json")"; }
+rm -rf "$ag/submission/my-repo" "$ag/results"
 AUTOGRADER_ROOT=$ag CLOTHLAB_BUILD=$build "$tmp/gs/run_autograder" >"$tmp/run.log" 2>&1
-jq -e '.score == 0 and .tests == [] and (.output | test("could not grade this submission:\nerror: .*submission: [(]folder[)]"))' \
-  "$ag/results/results.json" >/dev/null || { tail "$tmp/run.log"; fail "run_autograder without a submission: $(head -c 400 "$ag/results/results.json")"; }
+jq -e '.score == 0 and .tests == [] and (.output | test("could not grade this submission:\nerror: .*submission: [(]layout[)]: no stage folder found"))' \
+  "$ag/results/results.json" >/dev/null || { tail "$tmp/run.log"; fail "run_autograder without stage folders: $(head -c 400 "$ag/results/results.json")"; }
 echo "the copy's workflow grades, summarises and uploads grade.json (no other action); the Gradescope bundle has executable, bash -n clean setup.sh and run_autograder, and run_autograder writes results.json"
