@@ -21,13 +21,13 @@ grep -q "reference objects" "$tmp/release.log" || fail "lab release does not rep
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
 [[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
 # Exactly the committed files: nothing untracked, no build output.
-{ git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/classroom.yml
+{ git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/grade.yml
   git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'
   echo framework/reference/compiler.txt
   (cd "$tmp/copy" && find framework/reference -name '*.o' 2>/dev/null); } | sort >"$tmp/want.txt"
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
-  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the Classroom workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the CI workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
 # The reference objects: every stage of solutions/ has some, no source beside them, no debug information
 # (source paths, lines), no path into solutions/ (a Debug build's assert messages would quote code).
 for d in "$root"/solutions/[0-9][0-9]_*/; do
@@ -91,18 +91,19 @@ done
 code=$?
 [[ $code -eq 1 && $(grep -c '^error: scenes/pbd_hanging.json: solver.kernel: unknown value "batched" (allowed: exercise)$' "$tmp/run.log") -eq 1 ]] \
   || fail "kernel batched in the copy: exit $code, $(tail -2 "$tmp/run.log")"
-# GitHub Classroom: the workflow's grading commands, run here as its job runs them (the Debian setup,
-# the grader, the base64 output the reporter reads), give the reporter's format with every test.
-wf=.github/workflows/classroom.yml
-awk '/id: clothlab/ { on = 1 } on && /run: \|/ { run = 1; next } run && /^ *- name:/ { exit } run { sub(/^ +/, ""); print }' "$wf" >"$tmp/step.sh"
-grep -q 'lab grade' "$tmp/step.sh" || fail "$wf: no grading step found"
-mkdir -p "$tmp/runner"; : >"$tmp/gh_output"
-RUNNER_TEMP=$tmp/runner GITHUB_OUTPUT=$tmp/gh_output bash -e "$tmp/step.sh" >"$tmp/step.log" 2>&1 || { tail "$tmp/step.log"; fail "the workflow's grading step fails"; }
-grep '^result=' "$tmp/gh_output" | cut -d= -f2- | base64 -d >"$tmp/classroom.json" || fail "the step's result is not base64"
+# The GitHub Actions self-grade: the workflow's commands, run here as its job runs them (the Debian
+# setup, the grader, the table appended to the job summary), give grade.json with every test and the
+# Markdown table with the total.
+wf=.github/workflows/grade.yml
+awk '/^ *run: \|/ { run = 1; next } run && /^ *(- |[a-z-]+:)/ { run = 0 } run { sub(/^ +/, ""); print; next }
+     /^ *run: / { sub(/^ *run: /, ""); print }' "$wf" >"$tmp/steps.sh"
+grep -q 'lab grade' "$tmp/steps.sh" && grep -q 'GITHUB_STEP_SUMMARY' "$tmp/steps.sh" || fail "$wf: no grading or summary step: $(cat "$tmp/steps.sh")"
+: >"$tmp/summary.md"
+GITHUB_STEP_SUMMARY=$tmp/summary.md bash -e "$tmp/steps.sh" >"$tmp/steps.log" 2>&1 || { tail "$tmp/steps.log"; fail "the workflow's steps fail"; }
 tests=$(grep -c '"name":' "$tmp/grade.json")  # one per graded test
-grep -q '"version":1' "$tmp/classroom.json" && grep -q '"status":"fail"' "$tmp/classroom.json" \
-  && [[ $(grep -o '"score":0' "$tmp/classroom.json" | wc -l) -eq $tests ]] \
-  || fail "the reporter's JSON lacks version/status or a score per test ($tests tests): $(head -c 300 "$tmp/classroom.json")"
+[[ $(grep -c '"name":' grade.json) -eq $tests ]] || fail "the workflow's grade.json lacks tests ($tests wanted)"
+grep -q '^| \*\*total\*\* | | | | \*\*0 / [1-9][0-9]*\*\* |$' "$tmp/summary.md" || fail "the job summary has no total row: $(head -c 400 "$tmp/summary.md")"
+rm -f grade.json grade.md  # the copy stays as released
 # Later stages do not wait for earlier ones: a student who finished 01-04 (here: the reference source
 # copied in) runs the lecture demo with the reference objects for 05 and 06, then edits stage 04 and
 # `./lab run` runs the edit. The copy's exercises/ is restored before the leak check.

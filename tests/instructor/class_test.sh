@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ./lab grade --class on a generated class writes the right gradebook. The class mixes the layouts an
-# LMS export or a GitHub Classroom clone gives (nested folders, a .zip with an extra top folder, a
+# LMS export or a clone of each student's repository gives (nested folders, a .zip with an extra top folder, a
 # .tar.gz) and the submissions a course sees: the reference, untouched stubs, typical mistakes, a
 # stage that does not compile, a hostile stage, a missing stage, an unreadable layout. The expected
 # points come from the points files (full or zero) and, for a mistake, from its graded binary that
@@ -110,9 +110,17 @@ done <"$book"
 ((rows == n)) || { echo "$rows rows for $n submissions"; bad=1; }
 (($(ls "$tmp/out/feedback" | wc -l) == n && $(ls "$tmp/out/junit" | wc -l) == n)) || { echo "not one feedback JSON and one JUnit file per student"; bad=1; }
 ((bad == 0)) || { cat "$book"; fail "the gradebook is wrong (lines above)"; }
+# The LMS imports (docs/grading.md "Exports") carry the same points per stage: moodle.csv is the
+# identifier and the stages, canvas.csv the identifier as Student and SIS User ID, a Points Possible row.
+k=$((${#stages[@]} + 1))
+tail -n +2 "$book" | cut -d, -f1-$k >"$tmp/book_points.csv"
+tail -n +2 "$tmp/out/moodle.csv" | cmp -s - "$tmp/book_points.csv" || fail "moodle.csv's points differ from gradebook.csv: $(head -3 "$tmp/out/moodle.csv")"
+sed -n 2p "$tmp/out/canvas.csv" | grep -q '^Points Possible,,,,' || fail "canvas.csv has no Points Possible row"
+tail -n +3 "$tmp/out/canvas.csv" | awk -F, '$1 != $3 || $2 != "" || $4 != "" { exit 1 }' || fail "canvas.csv: Student and SIS User ID differ, or ID/Section are set"
+tail -n +3 "$tmp/out/canvas.csv" | cut -d, -f1,5- | cmp -s - "$tmp/book_points.csv" || fail "canvas.csv's points differ from gradebook.csv: $(head -4 "$tmp/out/canvas.csv")"
 # A second run regrades nothing (content hashes) and writes the same gradebook.
 cp "$book" "$tmp/first.csv"
 "$grader" --kit "$kit" --class "$class" --out "$tmp/out" >"$tmp/grade2.log" 2>&1 || fail "second run"
 cmp -s "$book" "$tmp/first.csv" || fail "the second run wrote another gradebook"
 [[ $(grep -c "unchanged, not regraded" "$tmp/grade2.log") -eq $n ]] || { tail "$tmp/grade2.log"; fail "the second run regraded unchanged submissions"; }
-echo "class of $n graded in ${secs} s ($(nproc) cores): gradebook, feedback and JUnit per student match the expected points; a rerun regrades nothing"
+echo "class of $n graded in ${secs} s ($(nproc) cores): gradebook (and its Moodle and Canvas forms), feedback and JUnit per student match the expected points; a rerun regrades nothing"

@@ -77,19 +77,6 @@ void unpack(const Entry& e, const fs::path& to, const fs::path& log) {
                                  firstLines(readFile(log, 4096), 2, " ") + ")");
 }
 
-std::string csvField(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string r = "\"";
-    for (char c : s) r += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-    return r + "\"";
-}
-
-std::string number(double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", x);
-    return b;
-}
-
 }  // namespace
 
 std::vector<StageResult> resultsFromJson(const json& j) {
@@ -206,14 +193,29 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
             double p = 0;
             for (const auto& s : rows[i].stages)
                 if (s.stage == st.stage) p = s.points();
-            csv << "," << number(p);
+            csv << "," << csvNumber(p);
         }
         for (const auto& s : rows[i].stages) pts += s.points(), max += s.max_points();
-        csv << "," << number(pts) << "," << number(max) << "," << csvField(rows[i].status) << "," << csvField(hintsText(rows[i].stages)) << "\n";
+        csv << "," << csvNumber(pts) << "," << csvNumber(max) << "," << csvField(rows[i].status) << "," << csvField(hintsText(rows[i].stages)) << "\n";
     }
     csv.close();
-    std::printf("graded %zu submissions: %s (feedback/NAME.json and junit/NAME.xml beside it)\n", entries.size(),
-                (o.out / "gradebook.csv").c_str());
+    // The same points in the import formats of Moodle and Canvas: one column per stage (grade item or
+    // assignment), the student identified by the folder or archive name. With --only just those stages,
+    // so that an import does not overwrite the other stages' grades with zeros.
+    std::vector<GradeItem> items;
+    for (const auto& st : kit.stages) {
+        if (!o.grade.only.empty() && !o.grade.only.count(st.stage)) continue;
+        const json points = loadPoints(kit.points_dir, st.stage);
+        double max = 0;
+        for (const auto& [test, p] : points["tests"].items()) max += p.get<double>();
+        items.push_back({st.stage, "clothlab " + st.stage + " " + points["title"].get<std::string>(), max});
+    }
+    std::vector<GradebookRow> book;
+    for (size_t i = 0; i < entries.size(); ++i) book.push_back({entries[i].name, rows[i].stages});
+    writeFile(o.out / "moodle.csv", moodleCsv(items, book));
+    writeFile(o.out / "canvas.csv", canvasCsv(items, book));
+    std::printf("graded %zu submissions: %s (moodle.csv and canvas.csv for import, feedback/NAME.json and junit/NAME.xml beside it)\n",
+                entries.size(), (o.out / "gradebook.csv").c_str());
     return static_cast<int>(entries.size());
 }
 

@@ -4,9 +4,10 @@
 
 namespace grade {
 
+/// What gradeClass() grades, where its files go and how many students at a time.
 struct ClassOptions {
     fs::path class_dir;  ///< one folder or .zip/.tar.gz/.tgz/.tar per student
-    fs::path out;        ///< gradebook.csv, feedback/NAME.json, junit/NAME.xml, .work/ (cache)
+    fs::path out;        ///< gradebook.csv, moodle.csv, canvas.csv, feedback/NAME.json, junit/NAME.xml, .work/ (cache)
     int jobs = 1;        ///< students graded at the same time
     GradeOptions grade;  ///< per student (its jobs and work are set here)
 };
@@ -15,6 +16,7 @@ struct ClassOptions {
 /// submission costs that student only.
 int gradeClass(const Kit& kit, const ClassOptions& options);
 
+/// The stages of clothlab's own results JSON (resultsJson(), a cached result.json) read back.
 std::vector<StageResult> resultsFromJson(const json& j);
 
 }  // namespace grade

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <set>
@@ -27,10 +28,11 @@
 using namespace grade;
 
 int main(int argc, char** argv) {
+    const auto started = std::chrono::steady_clock::now();  // Gradescope's execution_time
     CLI::App app{"clothlab-grade — per-stage points from the graded tests"};
     std::vector<std::string> stages, only, answers;
     std::string points_dir, kit_file, submission, class_dir, out_dir, work, reference = "all";
-    std::string json_out, junit_out, classroom_out, expect, message, mistake, why;
+    std::string json_out, junit_out, gradescope_out, markdown_out, expect, message, mistake, why;
     int timeout_s = 30, jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     bool quiet = false, no_sandbox = false;
     app.add_option("--stage", stages, "NN=EXECUTABLE: run this graded binary (self-checks of the suite)");
@@ -46,7 +48,8 @@ int main(int argc, char** argv) {
     app.add_option("--points-dir", points_dir, "Folder with NN_name.points.json (default: the kit's)");
     app.add_option("--json", json_out, "Write the results as JSON");
     app.add_option("--junit", junit_out, "Write the results as JUnit XML");
-    app.add_option("--classroom", classroom_out, "Write the results for GitHub Classroom's grading reporter (JSON)");
+    app.add_option("--gradescope", gradescope_out, "Write the results as Gradescope's autograder results.json");
+    app.add_option("--markdown", markdown_out, "Write the per-stage table as Markdown (e.g. for GitHub's job summary)");
     app.add_option("--timeout", timeout_s, "Seconds per test")->check(CLI::PositiveNumber);
     app.add_option("--jobs", jobs, "Processes at a time")->check(CLI::PositiveNumber);
     app.add_flag("--no-sandbox", no_sandbox, "Run without bubblewrap (the points are then NOT trustworthy)");
@@ -60,6 +63,15 @@ int main(int argc, char** argv) {
 
     const int modes = !stages.empty() + !submission.empty() + !class_dir.empty();
     if (modes != 1) die("give exactly one of --stage NN=EXE, --submission DIR, --class DIR");
+    // The report files: checked before grading (which takes minutes), so a typo costs nothing.
+    for (const auto& [option, file] : {std::pair<std::string, std::string>{"--json", json_out}, {"--junit", junit_out},
+                                       {"--gradescope", gradescope_out}, {"--markdown", markdown_out}}) {
+        if (file.empty()) continue;
+        if (!class_dir.empty()) die(file + ": " + option + ": not with --class (the class's gradebooks and feedback go to --out)");
+        const fs::path dir = fs::absolute(file).parent_path();
+        if (!fs::is_directory(dir)) die(file + ": " + option + ": the folder " + dir.string() + " does not exist");
+        if (fs::is_directory(file)) die(file + ": " + option + ": is a folder, not a file");
+    }
     // The sandbox: required for a submission or a class (unless --no-sandbox); the self-checks run
     // binaries the build made, sandboxed where bwrap works.
     if (no_sandbox) {
@@ -117,7 +129,10 @@ int main(int argc, char** argv) {
     printTable(results, !quiet);
     if (!json_out.empty()) writeFile(json_out, resultsJson(results).dump(2) + "\n"), std::printf("wrote %s\n", json_out.c_str());
     if (!junit_out.empty()) writeJunit(junit_out, results), std::printf("wrote %s\n", junit_out.c_str());
-    if (!classroom_out.empty()) writeFile(classroom_out, classroomJson(results).dump() + "\n"), std::printf("wrote %s\n", classroom_out.c_str());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (!gradescope_out.empty())
+        writeFile(gradescope_out, gradescopeJson(results, seconds).dump(2) + "\n"), std::printf("wrote %s\n", gradescope_out.c_str());
+    if (!markdown_out.empty()) writeFile(markdown_out, markdownTable(results)), std::printf("wrote %s\n", markdown_out.c_str());
     if (expect.empty()) return 0;
 
     // Self-check mode: say what does not hold and exit non-zero.
