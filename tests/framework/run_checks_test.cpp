@@ -10,6 +10,7 @@
 #include "clothlab/io/scene_json.h"
 #include "clothlab/sim/colliders.h"
 #include "clothlab/sim/run.h"
+#include "clothlab/study/theory.h"
 
 using namespace clothlab;
 
@@ -115,6 +116,71 @@ TEST(RunChecks, EnergyGrowthFiresOnExplicitEuler) {
     EXPECT_GT(w->step, 1) << "it grows gradually";
     auto symplectic = makeSimulation(load("spring.json", {}));
     EXPECT_TRUE(runSimulation(*symplectic, 5000, 5000).warnings.empty()) << "symplectic Euler keeps the energy";
+}
+
+// Oscillation is not growth. Every force-based integrator, on the single spring (k = 1e6 N/m,
+// ω = 1000 rad/s) and on the hanging mass-spring cloth without damping, at a Δt theory calls stable
+// (half its critical step; explicit Euler has none) and one it calls unstable (1.5 times it; explicit
+// Euler at every Δt; implicit Euler at none): a stable run gets no EnergyGrowth warning and does not
+// stop, an unstable one stops or is warned about. Theory: theoreticalCriticalDt() of ω_max
+// (maxAngularFrequency(), an eigenvalue computation, not a run).
+TEST(RunChecks, EnergyVerdictFollowsTheoryForEveryIntegrator) {
+    struct Case { std::string scene; std::vector<std::string> sets; };
+    const std::vector<Case> cases = {
+        {"spring.json", {"spring.k=1e6"}},
+        {"mfn_hanging.json", {"springs.structural.kd=0", "springs.shear.kd=0", "forces.air_damping=0"}}};
+    for (const Case& c : cases)
+        for (Method m : {Method::ExplicitEuler, Method::SymplecticEuler, Method::VelocityVerlet, Method::Rk4, Method::ImplicitEuler}) {
+            std::vector<std::string> sets = c.sets;
+            sets.push_back(std::string("solver.method=") + methodName(m));
+            const double omega = maxAngularFrequency(load(c.scene, sets));
+            ASSERT_GT(omega, 0.0);
+            const double crit = theoreticalCriticalDt(m, omega);
+            const double base = theoreticalCriticalDt(Method::SymplecticEuler, omega);  // 2/ω
+            struct Run { double dt; bool stable; };
+            std::vector<Run> runs;
+            if (m == Method::ExplicitEuler) runs = {{0.5 * base, false}};
+            else if (m == Method::ImplicitEuler) runs = {{0.5 * base, true}, {10 * base, true}};
+            else runs = {{0.5 * crit, true}, {1.5 * crit, false}};
+            for (const Run& run : runs) {
+                std::vector<std::string> s2 = sets;
+                s2.push_back("solver.dt=" + std::to_string(run.dt));
+                auto sim = makeSimulation(load(c.scene, s2));
+                const RunResult r = runSimulation(*sim, 2000, 2000);
+                const bool warned = find(r, WarningKind::EnergyGrowth) != nullptr;
+                const std::string what = c.scene + " " + methodName(m) + " at omega_max dt = " + std::to_string(omega * run.dt);
+                if (run.stable)
+                    EXPECT_TRUE(!r.unstable && !warned) << what << ": stable by theory, but " << (r.unstable ? r.message : "an energy-growth warning");
+                else
+                    EXPECT_TRUE(r.unstable || warned) << what << ": unstable by theory, yet the run neither stopped nor warned";
+            }
+        }
+}
+
+// The sheet's question: symplectic Euler at ω Δt = 1 keeps its energy in a band. No warning (so
+// --strict passes), no advice to switch to the method in use; a note says how large the bounded
+// error is and that a smaller Δt narrows it.
+TEST(RunChecks, BoundedSymplecticOscillationGetsANoteNotAWarning) {
+    auto sim = makeSimulation(load("spring.json", {"spring.k=1e6", "solver.method=symplectic_euler"}));
+    const RunResult r = runSimulation(*sim, 5000, 5000);
+    ASSERT_FALSE(r.unstable) << r.message;
+    EXPECT_TRUE(r.warnings.empty()) << "a bounded oscillation is no warning: " << warningText(r.warnings.front(), sim->scene());
+    ASSERT_EQ(r.notes.size(), 1u) << "the energy error above the bound is noted once";
+    EXPECT_TRUE(contains(r.notes[0], "bounded") && contains(r.notes[0], "halving solver.dt about halves it") &&
+                !contains(r.notes[0], "symplectic or implicit"))
+        << r.notes[0];
+    std::ostringstream summary;
+    printSummary(summary, *sim, r);
+    EXPECT_TRUE(contains(summary.str(), "note: energy error") && !contains(summary.str(), "warning")) << summary.str();
+    // The growth warning's advice fits the method: explicit Euler is told of the symplectic methods,
+    // symplectic Euler of the step size only.
+    auto ee = makeSimulation(load("spring.json", {"solver.method=explicit_euler"}));
+    const RunResult re = runSimulation(*ee, 5000, 5000);
+    ASSERT_NE(find(re, WarningKind::EnergyGrowth), nullptr);
+    EXPECT_TRUE(contains(warningText(*find(re, WarningKind::EnergyGrowth), ee->scene()), "symplectic_euler"));
+    RunWarning w;
+    w.kind = WarningKind::EnergyGrowth;
+    EXPECT_FALSE(contains(warningText(w, sim->scene()), "symplectic_euler, velocity_verlet")) << warningText(w, sim->scene());
 }
 
 // A particle that leaves the region |x| < report.blowup stops the run with that cause, and every

@@ -63,6 +63,7 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
         out << "warnings: this result is not a result (" << r.warnings.size() << "):\n";
         for (const RunWarning& w : r.warnings) out << "  warning: " << warningText(w, sim.scene()) << "\n";
     }
+    for (const std::string& n : r.notes) out << "note: " << n << "\n";
     double total = 0.0;
     for (const auto& p : sim.timer().passes()) total += p.seconds;
     out << "passes that ran (wall time):\n";
@@ -103,6 +104,7 @@ void writeSummaryJson(const std::string& path, const Simulation& sim, const RunR
         for (const Metric& m : r.rows.back().metrics) j["metrics"][m.name] = {{"value", m.value}, {"unit", m.unit}};
     if (!sim.scene().colliders.empty())
         j["metrics"]["worst_penetration"] = {{"value", r.worst_penetration}, {"unit", "m"}, {"step", r.worst_penetration_step}};
+    j["notes"] = r.notes;
     j["warnings"] = nlohmann::json::array();
     for (const RunWarning& w : r.warnings) {
         nlohmann::json x = {{"kind", warningName(w.kind)}, {"step", w.step}, {"t", w.t}, {"value", w.value}, {"message", warningText(w, sim.scene())}};

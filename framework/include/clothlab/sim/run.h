@@ -34,7 +34,8 @@ enum class WarningKind {
     FellThrough,   ///< a particle's path in one step reached kFellThroughFactor · h inside a collider
     NotConverged,  ///< RMS edge strain above kNotConvergedRmsStrain for a cloth meant to be inextensible
     Penetration,   ///< a particle more than (kPenetrationFactor − 1) h inside a collider at the end of a step
-    EnergyGrowth   ///< the energy rose above E(0) by more than kEnergyGrowthBound · E_scale
+    EnergyGrowth   ///< the energy rose above E(0) by more than kEnergyGrowthBound · E_scale and its
+                   ///< envelope kept rising (growth, not a bounded oscillation: RunChecks)
 };
 
 /// RMS edge strain (1) above which a cloth meant to be inextensible (distance constraints with PBD
@@ -56,6 +57,16 @@ constexpr double kFellThroughMinDepth = 1e-3;
 /// EnergyGrowth bound, in units of energyScale(); scenes with wind (energy input) or pins moved
 /// away from the rest shape (`"to"`: stored energy the constraints release) are not checked.
 constexpr double kEnergyGrowthBound = 0.1;
+/// Growth against oscillation: the envelope of g = (E − E0)/E_scale, its maximum over the steps
+/// (s/2, s], must exceed (1 + kEnvelopeRise) times its maximum over [1, s/2] (taken as ≥ 0) at a
+/// checkpoint s = 2^k for EnergyGrowth. A bounded oscillation (symplectic Euler, velocity Verlet: the
+/// energy error oscillates about a modified energy, with the period of the fastest mode, π/(ω Δt)
+/// steps or less for an error above the bound) has the same maximum in both windows.
+constexpr double kEnvelopeRise = 0.1;
+/// The first checkpoint that gives a verdict, in steps: each window then spans 32 steps or more, the
+/// longest period of an energy oscillation that can exceed kEnergyGrowthBound (ω Δt > 0.2). A run
+/// that ends earlier compares its last steps with the ones before them.
+constexpr long long kEnergyFirstVerdict = 64;
 
 /// One warning of a run: what, where it started, how bad.
 struct RunWarning {
@@ -147,6 +158,8 @@ struct RunResult {
     double worst_penetration = 0.0;    ///< RunChecks::worstPenetration(), m (0 without colliders)
     long long worst_penetration_step = 0;  ///< the step it was reached at
     std::vector<ReportRow> rows;  ///< one row every `every` steps and one at the end
+    std::vector<std::string> notes;  ///< what a reader should know that does not make the run wrong, e.g. an
+                                     ///< energy error above kEnergyGrowthBound that stays bounded (accuracy, not stability)
 };
 
 /// The checks of a run beside the step: the stop causes of stepAndCheck() and, without stopping,
@@ -170,7 +183,7 @@ public:
     /// Ends the run: a NotConverged stretch still above the bound at the end fires now.
     /// @param sim  the simulation
     void finish(const Simulation& sim);
-    /// Copies cause(), warnings() (most severe kind first) and the worst penetration into `r`.
+    /// Copies cause(), warnings() (most severe kind first), notes() and the worst penetration into `r`.
     /// @param r  the result of the run
     void collect(RunResult& r) const;
 
@@ -178,6 +191,8 @@ public:
     StopCause cause() const { return cause_; }
     /// The warnings so far, in the order they fired.
     const std::vector<RunWarning>& warnings() const { return warnings_; }
+    /// The notes so far (RunResult::notes): a bounded energy error above the bound, once the run ended.
+    const std::vector<std::string>& notes() const { return notes_; }
     /// Largest penetration max(0, h − d) over every step end, particle and collider so far, m.
     double worstPenetration() const { return worstPenetration_; }
     /// The step at which worstPenetration() was reached (0: the initial state or none).
@@ -187,6 +202,8 @@ private:
     RunWarning& warn(WarningKind k, long long step, double t, int collider = -1);
     void checkColliders(const Simulation& sim, long long step);
     void checkStrain(const Simulation& sim, long long step);
+    void checkEnergy(const Simulation& sim, long long step);
+    void judgeEnergy(double later, double before);
 
     Matrix3X xOld_;                        ///< positions before the step, m
     std::vector<std::vector<char>> watch_; ///< per collider and particle: outside at t = 0, not fallen yet
@@ -195,6 +212,14 @@ private:
     StopCause cause_ = StopCause::None;
     double e0_ = 0.0, eScale_ = 1.0;       ///< E(0) and energyScale(), J
     bool checkEnergy_ = true, checkStrain_ = false;
+    std::string method_;                   ///< the scene's solver.method, for the advice
+    double gMax_ = 0.0;                    ///< largest g = (E − E0)/E_scale so far
+    long long gAbove_ = 0;                 ///< first step with g > kEnergyGrowthBound (0: none)
+    double gAboveT_ = 0.0;                 ///< its time, s
+    double envBefore_ = -1e300, envWindow_ = -1e300;  ///< max g over [1, s/2] and over (s/2, now]
+    double lastWindow_ = -1e300, lastBefore_ = -1e300;  ///< the two windows at the last checkpoint
+    long long nextCheckpoint_ = 1;         ///< the next power of two
+    std::vector<std::string> notes_;
     long long strainSince_ = 0;            ///< first step of the current stretch above the strain bound (0: none)
     double strainSinceT_ = 0.0;            ///< its time, s
     double worstPenetration_ = 0.0;
