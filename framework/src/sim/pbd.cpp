@@ -14,7 +14,8 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
     const SolverSpec& sv = scene.solver;
     xpbd_ = sv.method == Method::Xpbd;
     subDt_ = sv.dt / sv.substeps;
-    threads_ = sweepThreads(sv.threads);
+    team_ = AdaptiveTeam(sv.threads);  // solver.threads: N fixed, 0 (default) 1 or all cores, the faster (sim/team.h)
+    threads_ = team_.most();
     // Lines (1)-(3): x_i, v_i, w_i of every particle (a grid or a mesh, at rest).
     ClothGeometry cloth = makeClothGeometry(scene.cloth);
     static_cast<State&>(P_) = std::move(cloth.state);
@@ -156,6 +157,7 @@ void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
 }
 
 void PbdSimulation::projectConstraints(Matrix3X& p) {
+    auto unit = team_.unit();  // the sweeps' threads: solver.threads, or timed (AdaptiveTeam)
     const VectorX& w = P_.w;
     const double dt2 = subDt_ * subDt_;
     if (distancePass_ >= 0) {
