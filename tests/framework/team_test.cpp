@@ -129,23 +129,24 @@ TEST(Threads, AdaptiveTeamKeepsTheFasterSizeAndFollowsTheLoad) {
     AdaptiveTeam team(0);
     ASSERT_TRUE(team.adaptive());
     EXPECT_EQ(team.threads(), 2) << "starts with all cores";
-    // Idle: two threads take half the time. After the start, one unit in 256 at most on one thread.
+    // Idle: two threads take half the time. After the start, one unit in kLongestInterval = 64 at most
+    // on one thread.
     const auto idle = [](int size) { return size == 1 ? 2.0 : 1.0; };
     drive(team, 4000, idle);
     EXPECT_EQ(team.threads(), 2);
-    EXPECT_LE(team.units(1), 4 + 4000 / 256 + 8) << "probes of one thread";
-    EXPECT_GE(team.units(1), 4000 / 256 / 2) << "and it keeps probing";
+    EXPECT_LE(team.units(1), 4 + 4000 / AdaptiveTeam::kLongestInterval + 8) << "probes of one thread";
+    EXPECT_GE(team.units(1), 4000 / AdaptiveTeam::kLongestInterval / 2) << "and it keeps probing";
     // Busy: two threads now take 3 times one thread's time; within one probe interval it follows.
     const auto busy = [](int size) { return size == 1 ? 2.0 : 6.0; };
     const long before = team.units(2);
     drive(team, 300, busy);
     EXPECT_EQ(team.threads(), 1);
-    EXPECT_LE(team.units(2) - before, 258);
-    // It stays on one thread, probing two threads rarely: at most 1 unit in 100 after backing off.
+    EXPECT_LE(team.units(2) - before, AdaptiveTeam::kLongestInterval + 2);
+    // It stays on one thread, probing two threads rarely: about 1 unit in 64 after backing off.
     const long onTwo = team.units(2);
     drive(team, 4000, busy);
     EXPECT_EQ(team.threads(), 1);
-    EXPECT_LE(team.units(2) - onTwo, 4000 / 100);
+    EXPECT_LE(team.units(2) - onTwo, 4000 / AdaptiveTeam::kLongestInterval + 4);
     // Idle again: back to two threads.
     drive(team, 300, idle);
     EXPECT_EQ(team.threads(), 2);
@@ -165,7 +166,19 @@ TEST(Threads, AdaptiveTeamProbesAtOnceWhenTheCurrentSizeGetsSlower) {
     }
     team.record(3.0);
     EXPECT_EQ(team.threads(), 1) << "a probe right after the average passes one thread's";
-    team.record(2.0);  // the probe wins
+    team.record(2.0);  // the probe wins (2 s < 0.95 · 2.16 s)
+    EXPECT_EQ(team.threads(), 1);
+}
+
+TEST(Threads, AdaptiveTeamSwitchesOnlyForTheMargin) {
+    const DefaultThreads two(2);
+    AdaptiveTeam team(0);
+    // One thread 3 % faster than two: within the margin (5 %), it stays on two threads.
+    drive(team, 1000, [](int size) { return size == 1 ? 0.97 : 1.0; });
+    EXPECT_EQ(team.threads(), 2);
+    EXPECT_EQ(team.switches(), 0);
+    // 10 % faster: it switches.
+    drive(team, 200, [](int size) { return size == 1 ? 0.9 : 1.0; });
     EXPECT_EQ(team.threads(), 1);
 }
 
@@ -183,7 +196,7 @@ TEST(Threads, AdaptiveDefaultGivesTheSerialStateBitForBit) {
         for (int k = 0; k < 60; ++k) one.step(), chosen.step();
         EXPECT_TRUE(bitIdentical(one.state().x, chosen.state().x)) << method;
         EXPECT_TRUE(bitIdentical(one.state().v, chosen.state().v)) << method;
-        // 600 iterations: both sizes ran (the start measures both, probes come every 256 units at most)
+        // Both sizes ran (the start measures both, a probe comes every 64 steps at most)
         EXPECT_GE(chosen.team().units(1), 2) << method;
         EXPECT_GE(chosen.team().units(2), 2) << method;
     }

@@ -90,6 +90,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
 // Line (4) calls this once per frame; line (17) is its end.
 void PbdSimulation::step() {
     const SolverSpec& sv = scene_.solver;
+    auto unit = team_.unit();  // the sweeps' threads: solver.threads, or the faster, timed (sim/team.h)
     for (int s = 0; s < sv.substeps; ++s) {
         std::fill(linkLambda_.begin(), linkLambda_.end(), 0.0);  // XPBD: λ = 0 at the start of every (sub)step
         std::fill(bendLambda_.begin(), bendLambda_.end(), 0.0);
@@ -157,7 +158,6 @@ void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
 }
 
 void PbdSimulation::projectConstraints(Matrix3X& p) {
-    auto unit = team_.unit();  // the sweeps' threads: solver.threads, or timed (AdaptiveTeam)
     const VectorX& w = P_.w;
     const double dt2 = subDt_ * subDt_;
     if (distancePass_ >= 0) {

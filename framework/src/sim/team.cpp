@@ -159,7 +159,7 @@ AdaptiveTeam::AdaptiveTeam(int requested) {
 }
 
 void AdaptiveTeam::record(double seconds) {
-    const int s = adaptive_ ? now_ ^ probing_ : 1;  // the size that ran
+    const int s = adaptive_ ? now_ ^ probing_ : size_[1] == 1 ? 0 : 1;  // the size that ran
     ++units_[s];
     if (!adaptive_) return;
     const bool probe = probing_ != 0;
@@ -174,18 +174,19 @@ void AdaptiveTeam::record(double seconds) {
         probing_ = 1;
         return;
     }
+    const double keep = 1.0 - kMargin;  // the other size must be faster by the margin
     if (probe) {  // the other size just ran: keep the faster
-        if (mean_[other] < mean_[now_]) {
+        if (mean_[other] < keep * mean_[now_]) {
             now_ = other;
             ++switches_;
-            interval_ = 8;
+            interval_ = kFirstInterval;
         } else {
-            interval_ = std::min(2 * interval_, 256);
+            interval_ = std::min(2 * interval_, kLongestInterval);
         }
         untilProbe_ = interval_;
         return;
     }
-    if (--untilProbe_ <= 0 || mean_[now_] > mean_[other]) probing_ = 1;
+    if (--untilProbe_ <= 0 || keep * mean_[now_] > mean_[other]) probing_ = 1;
 }
 
 AdaptiveTeam::Unit::Unit(AdaptiveTeam& team) : team_(team), cap_(team.threads()), start_(Clock::now()) {}

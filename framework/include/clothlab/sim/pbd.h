@@ -61,7 +61,7 @@ public:
     /// The colour groups of bendingStencilList() and the threads that sweep them.
     const SweepPlan& bendingPlan() const { return stencilPlan_; }
     /// How many threads the sweeps use: solver.threads, or for 0 the faster of 1 and all cores, timed
-    /// per iteration of line (9)–(11) (one call of projectConstraints()).
+    /// per step().
     const AdaptiveTeam& team() const { return team_; }
 
 protected:

@@ -75,21 +75,28 @@ void setDefaultThreads(int threads);
 /// The team size of one solver: fixed (`solver.threads: N`, N ≥ 1) or, for the default
 /// `solver.threads: 0`, chosen between 1 and m = defaultThreads() threads by timing.
 ///
-/// The solver runs every unit of its work (a PBD iteration, an implicit Euler step) inside unit(),
-/// which caps its parallel loops at threads() and records the unit's wall-clock time T. The rule:
+/// The solver runs every unit of its work (a PBD step, an implicit Euler step: long enough to span
+/// several of the scheduler's time slices) inside unit(), which caps its parallel loops at threads()
+/// and records the unit's wall-clock time T. The rule:
 /// - per size s ∈ {1, m} an exponential moving average \f$ \bar T_s \leftarrow \bar T_s + \tfrac14 (T - \bar T_s) \f$;
 ///   the first unit of each size (starting its threads, cold caches) is not counted;
 /// - at the start each size runs until it has one counted unit (m first), then the size of the smaller
 ///   \f$ \bar T \f$ is current;
 /// - every `interval` units of the current size one unit runs with the other size (a probe); its T
-///   replaces the other's \f$ \bar T \f$. A probe that wins (\f$ T < \bar T_{current} \f$) makes its size
-///   current and sets interval = 8; one that loses doubles interval, up to 256. A probe also comes at
-///   once when \f$ \bar T_{current} \f$ rises above the other's (the machine got busier or quieter).
+///   replaces the other's \f$ \bar T \f$. A probe that wins by the margin
+///   (\f$ T < (1 - \mathit{kMargin})\,\bar T_{current} \f$) makes its size current and sets interval =
+///   kFirstInterval; one that does not doubles interval, up to kLongestInterval. A probe also comes at
+///   once when \f$ (1 - \mathit{kMargin})\,\bar T_{current} \f$ rises above the other's
+///   \f$ \bar T \f$ (the machine got busier or quieter).
 ///
-/// A probe that loses costs at most one unit in 256 once the interval has grown; under load the current
-/// size follows within 256 units.
+/// Once the interval has grown, probes that lose cost at most one unit in kLongestInterval; when the
+/// load changes, the current size follows within kLongestInterval units.
 class AdaptiveTeam {
 public:
+    static constexpr int kFirstInterval = 4;     ///< units between probes after a switch
+    static constexpr int kLongestInterval = 64;  ///< the most units between probes
+    static constexpr double kMargin = 0.05;      ///< how much faster the other size must be to switch
+
     /// @param requested  solver.threads: N ≥ 1 fixes the team at N threads, 0 chooses between 1 and
     ///                   defaultThreads() (fixed at 1 when that is 1)
     explicit AdaptiveTeam(int requested = 1);
@@ -139,8 +146,8 @@ private:
     double mean_[2] = {0, 0}; ///< T̄ per size, s (valid once counted_ > 0)
     long counted_[2] = {0, 0};  ///< units counted per size
     long units_[2] = {0, 0};  ///< units recorded per size, the uncounted first ones too
-    int interval_ = 8;        ///< units of the current size between probes
-    int untilProbe_ = 8;      ///< units of the current size left before the next probe
+    int interval_ = kFirstInterval;    ///< units of the current size between probes
+    int untilProbe_ = kFirstInterval;  ///< units of the current size left before the next probe
     long switches_ = 0;       ///< changes of the current size
 };
 
