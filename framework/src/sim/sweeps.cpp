@@ -46,13 +46,14 @@ SweepPlan sweepPlan(const std::vector<Eigen::Vector4i>& particles, int nParticle
 void forEachGroupShare(const std::vector<int>& groups, int threads, int minParallel,
                        const std::function<void(int begin, int end)>& sweep) {
     const int n = teamThreads(threads);  // capped by the solver's AdaptiveTeam (sim/team.h)
+    int first = 0, size = 0;              // the current group
+    const std::function<void(int, int)> share = [&](int t, int n) {  // made once per sweep, not per group
+        sweep(first + size * t / n, first + size * (t + 1) / n);
+    };
     for (size_t g = 0; g + 1 < groups.size(); ++g) {
-        const int first = groups[g], size = groups[g + 1] - first;
-        if (n <= 1 || size < minParallel) {  // serial: starting threads would cost more
-            sweep(first, first + size);
-            continue;
-        }
-        runShares(n, [&](int t, int n) { sweep(first + size * t / n, first + size * (t + 1) / n); });
+        first = groups[g], size = groups[g + 1] - first;
+        if (n <= 1 || size < minParallel) sweep(first, first + size);  // serial: starting threads would cost more
+        else runShares(n, share);
     }
 }
 
