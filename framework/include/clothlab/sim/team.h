@@ -54,6 +54,7 @@ class TeamCap {
 public:
     /// @param most  the cap, ≥ 1
     explicit TeamCap(int most);
+    /// Restores the cap that was in force before this one.
     ~TeamCap();
     TeamCap(const TeamCap&) = delete;
     TeamCap& operator=(const TeamCap&) = delete;
@@ -123,6 +124,7 @@ public:
     public:
         /// @param team  the team that chooses the size and records the time
         explicit Unit(AdaptiveTeam& team);
+        /// Ends the cap and records the unit's wall-clock time with AdaptiveTeam::record().
         ~Unit();
         Unit(const Unit&) = delete;
         Unit& operator=(const Unit&) = delete;
