@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clothlab/sim/sweeps.h"
+#include "clothlab/sim/team.h"
+
 namespace clothlab {
 namespace {
 using Triplet = Eigen::Triplet<double>;
@@ -29,11 +32,12 @@ constexpr int kChunk = 1024;         // particles per partial sum of a dot produ
 double dot(const Matrix3X& a, const Matrix3X& b, int threads) {
     const int n = static_cast<int>(a.cols()), chunks = (n + kChunk - 1) / kChunk;
     std::vector<double> part(static_cast<size_t>(chunks));
-#pragma omp parallel for num_threads(threads) if (threads > 1)
-    for (int c = 0; c < chunks; ++c) {
-        const int first = c * kChunk, count = std::min(kChunk, n - first);
-        part[static_cast<size_t>(c)] = (a.middleCols(first, count).array() * b.middleCols(first, count).array()).sum();
-    }
+    forEachShare(chunks, threads, 2, [&](int begin, int end) {
+        for (int c = begin; c < end; ++c) {
+            const int first = c * kChunk, count = std::min(kChunk, n - first);
+            part[static_cast<size_t>(c)] = (a.middleCols(first, count).array() * b.middleCols(first, count).array()).sum();
+        }
+    });
     double sum = 0.0;
     for (double p : part) sum += p;
     return sum;
@@ -91,75 +95,80 @@ void ImplicitEulerSolver::applyA(const Matrix3X& x, Matrix3X& y) const {
     // (A x)_i = (m_i + Δt c) x_i + Σ_{springs s of i} B_s (x_i − x_other), B_s u = a_s (n_s·u) n_s + b_s u;
     // pinned rows are zero (x is zero there)
     const int n = static_cast<int>(x.cols());
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
-    for (int i = 0; i < n; ++i) {
-        if (!(mass_[i] > 0.0)) {  // pinned
-            y.col(i).setZero();
-            continue;
+    forEachShare(n, threads_, kParallelGroup, [&](int first, int last) {
+        for (int i = first; i < last; ++i) {
+            if (!(mass_[i] > 0.0)) {  // pinned
+                y.col(i).setZero();
+                continue;
+            }
+            const Vec3 xi = x.col(i);
+            Vec3 yi = mass_[i] * xi;
+            for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
+                const SpringEnd& end = adj_[static_cast<size_t>(e)];
+                const SpringBlock& B = B_[static_cast<size_t>(end.spring)];
+                const Vec3 u = xi - x.col(end.other);
+                yi += (B.a * B.n.dot(u)) * B.n + B.b * u;
+            }
+            y.col(i) = yi;
         }
-        const Vec3 xi = x.col(i);
-        Vec3 yi = mass_[i] * xi;
-        for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
-            const SpringEnd& end = adj_[static_cast<size_t>(e)];
-            const SpringBlock& B = B_[static_cast<size_t>(end.spring)];
-            const Vec3 u = xi - x.col(end.other);
-            yi += (B.a * B.n.dot(u)) * B.n + B.b * u;
-        }
-        y.col(i) = yi;
-    }
+    });
 }
 
 bool ImplicitEulerSolver::stepBlockCg(Matrix3X& x, Matrix3X& v, const VectorX& w, const std::vector<Spring>& springs,
                                       double c, double dt) {
+    auto unit = team_.unit();  // the threads of this step: solver.threads, or timed (AdaptiveTeam)
     const int n = static_cast<int>(x.cols());
     // (2) per spring its block B = −Δt² K_jj − Δt D_jj and Δt² K_jj (v_j − v_i), each spring on its own (no race).
     // K_jj and D_jj as in springJacobianBlocks(), kept as n and two numbers: −Δt² K_jj = aK n nᵀ + bK I.
     const int m = static_cast<int>(springs.size());
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
-    for (int k = 0; k < m; ++k) {
-        const Spring& s = springs[static_cast<size_t>(k)];
-        SpringBlock& B = B_[static_cast<size_t>(k)];
-        const Vec3 d = x.col(s.j) - x.col(s.i);
-        const double l = d.norm();
-        if (!(l > 1e-12)) {  // no direction: no stiffness
-            B = {Vec3::Zero(), 0.0, 0.0};
-            Kv_[static_cast<size_t>(k)].setZero();
-            continue;
+    forEachShare(m, threads_, kParallelGroup, [&](int first, int last) {
+        for (int k = first; k < last; ++k) {
+            const Spring& s = springs[static_cast<size_t>(k)];
+            SpringBlock& B = B_[static_cast<size_t>(k)];
+            const Vec3 d = x.col(s.j) - x.col(s.i);
+            const double l = d.norm();
+            if (!(l > 1e-12)) {  // no direction: no stiffness
+                B = {Vec3::Zero(), 0.0, 0.0};
+                Kv_[static_cast<size_t>(k)].setZero();
+                continue;
+            }
+            B.n = d / l;
+            const double transverse = std::max(0.0, 1.0 - s.l0 / l);  // clamped: never indefinite
+            const double aK = dt * dt * s.k * (1.0 - transverse), bK = dt * dt * s.k * transverse;
+            B.a = aK + dt * s.kd;  // −Δt² K_jj − Δt D_jj, D_jj = −k_d n nᵀ
+            B.b = bK;
+            const Vec3 u = v.col(s.j) - v.col(s.i);
+            Kv_[static_cast<size_t>(k)] = -(aK * B.n.dot(u) * B.n + bK * u);
         }
-        B.n = d / l;
-        const double transverse = std::max(0.0, 1.0 - s.l0 / l);  // clamped: never indefinite
-        const double aK = dt * dt * s.k * (1.0 - transverse), bK = dt * dt * s.k * transverse;
-        B.a = aK + dt * s.kd;  // −Δt² K_jj − Δt D_jj, D_jj = −k_d n nᵀ
-        B.b = bK;
-        const Vec3 u = v.col(s.j) - v.col(s.i);
-        Kv_[static_cast<size_t>(k)] = -(aK * B.n.dot(u) * B.n + bK * u);
-    }
+    });
     // b_i = Δt f_i ± (K v) of its springs; the block-Jacobi preconditioner D_i⁻¹, D_i = (m_i + Δt c) I + Σ B_s; per particle
     bBlock_.resize(3, n);
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
-    for (int i = 0; i < n; ++i) {
-        if (!(w[i] > 0.0)) {
-            bBlock_.col(i).setZero();
-            mass_[i] = 0.0;
-            Dinv_[static_cast<size_t>(i)].setZero();  // keeps z, and so Δv, zero there
-            continue;
+    forEachShare(n, threads_, kParallelGroup, [&](int first, int last) {
+        for (int i = first; i < last; ++i) {
+            if (!(w[i] > 0.0)) {
+                bBlock_.col(i).setZero();
+                mass_[i] = 0.0;
+                Dinv_[static_cast<size_t>(i)].setZero();  // keeps z, and so Δv, zero there
+                continue;
+            }
+            mass_[i] = 1.0 / w[i] + dt * c;
+            Vec3 bi = dt * f_.col(i);
+            Mat3 D = mass_[i] * Mat3::Identity();
+            for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
+                const size_t k = static_cast<size_t>(adj_[static_cast<size_t>(e)].spring);
+                const SpringBlock& B = B_[k];
+                bi += springs[k].j == i ? Kv_[k] : Vec3(-Kv_[k]);
+                D += B.a * B.n * B.n.transpose() + B.b * Mat3::Identity();
+            }
+            bBlock_.col(i) = bi;
+            Dinv_[static_cast<size_t>(i)] = D.inverse();
         }
-        mass_[i] = 1.0 / w[i] + dt * c;
-        Vec3 bi = dt * f_.col(i);
-        Mat3 D = mass_[i] * Mat3::Identity();
-        for (int e = adjStart_[static_cast<size_t>(i)]; e < adjStart_[static_cast<size_t>(i) + 1]; ++e) {
-            const size_t k = static_cast<size_t>(adj_[static_cast<size_t>(e)].spring);
-            const SpringBlock& B = B_[k];
-            bi += springs[k].j == i ? Kv_[k] : Vec3(-Kv_[k]);
-            D += B.a * B.n * B.n.transpose() + B.b * Mat3::Identity();
-        }
-        bBlock_.col(i) = bi;
-        Dinv_[static_cast<size_t>(i)] = D.inverse();
-    }
+    });
     // (3) preconditioned conjugate gradients from the previous step's Δv (pinned columns stay zero)
     const auto precondition = [&](const Matrix3X& r, Matrix3X& z) {
-#pragma omp parallel for num_threads(threads_) if (threads_ > 1)
-        for (int i = 0; i < n; ++i) z.col(i) = Dinv_[static_cast<size_t>(i)] * r.col(i);
+        forEachShare(n, threads_, kParallelGroup, [&](int first, int last) {
+            for (int i = first; i < last; ++i) z.col(i) = Dinv_[static_cast<size_t>(i)] * r.col(i);
+        });
     };
     Matrix3X& dv = dvBlock_;
     for (int i = 0; i < n; ++i)

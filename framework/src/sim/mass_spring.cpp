@@ -130,7 +130,7 @@ MassSpringSimulation::MassSpringSimulation(const Scene& scene, MassSpringModel m
             term(x, v, out);
         }
     };
-    implicit_.setThreads(sweepThreads(scene.solver.threads));
+    implicit_.setThreads(scene.solver.threads);  // 0: the faster of 1 and all cores (sim/team.h)
     integrate_pass_ = timer_.add(std::string("integrate: ") + methodName(scene.solver.method));
     if (scene.provot.enabled && !springs_.empty()) provot_pass_ = timer_.add("provot: strain limit");
     analytic_ = singleSpringAnalytic(scene);

@@ -14,7 +14,8 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
     const SolverSpec& sv = scene.solver;
     xpbd_ = sv.method == Method::Xpbd;
     subDt_ = sv.dt / sv.substeps;
-    threads_ = sweepThreads(sv.threads);
+    team_ = AdaptiveTeam(sv.threads);  // solver.threads: N fixed, 0 (default) 1 or all cores, the faster (sim/team.h)
+    threads_ = team_.most();
     // Lines (1)-(3): x_i, v_i, w_i of every particle (a grid or a mesh, at rest).
     ClothGeometry cloth = makeClothGeometry(scene.cloth);
     static_cast<State&>(P_) = std::move(cloth.state);
@@ -89,6 +90,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
 // Line (4) calls this once per frame; line (17) is its end.
 void PbdSimulation::step() {
     const SolverSpec& sv = scene_.solver;
+    auto unit = team_.unit();  // the sweeps' threads: solver.threads, or the faster, timed (sim/team.h)
     for (int s = 0; s < sv.substeps; ++s) {
         std::fill(linkLambda_.begin(), linkLambda_.end(), 0.0);  // XPBD: λ = 0 at the start of every (sub)step
         std::fill(bendLambda_.begin(), bendLambda_.end(), 0.0);

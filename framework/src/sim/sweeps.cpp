@@ -1,10 +1,7 @@
 #include "clothlab/sim/sweeps.h"
 
-#include <omp.h>
-
-#include <exception>
-
 #include "clothlab/exercise/04_distance.h"
+#include "clothlab/sim/team.h"
 #include "clothlab/sim/xpbd.h"
 
 namespace clothlab {
@@ -15,12 +12,6 @@ void addCorrection(const BendingStencil& s, const BendingCorrection& c, Matrix3X
     p.col(s.i2) += c.dp2;
     p.col(s.i3) += c.dp3;
     p.col(s.i4) += c.dp4;
-}
-
-/// Keeps the first exception thrown (a stub's "not implemented", say) in `error`.
-void keepFirst(std::exception_ptr& error) {
-#pragma omp critical(clothlab_sweep_error)
-    if (!error) error = std::current_exception();
 }
 
 /// Calls project(n) for the constraints n = 0 .. count − 1, group after group (forEachGroupShare());
@@ -54,27 +45,19 @@ SweepPlan sweepPlan(const std::vector<Eigen::Vector4i>& particles, int nParticle
 
 void forEachGroupShare(const std::vector<int>& groups, int threads, int minParallel,
                        const std::function<void(int begin, int end)>& sweep) {
+    const int n = teamThreads(threads);  // capped by the solver's AdaptiveTeam (sim/team.h)
+    int first = 0, size = 0;              // the current group
+    const std::function<void(int, int)> share = [&](int t, int n) {  // made once per sweep, not per group
+        sweep(first + size * t / n, first + size * (t + 1) / n);
+    };
     for (size_t g = 0; g + 1 < groups.size(); ++g) {
-        const int first = groups[g], size = groups[g + 1] - first;
-        if (threads <= 1 || size < minParallel) {  // serial: starting threads would cost more
-            sweep(first, first + size);
-            continue;
-        }
-        std::exception_ptr error;  // an exception must not leave a parallel region: rethrown after it
-#pragma omp parallel num_threads(threads)
-        {
-            const int t = omp_get_thread_num(), n = omp_get_num_threads();
-            try {
-                sweep(first + size * t / n, first + size * (t + 1) / n);
-            } catch (...) {
-                keepFirst(error);
-            }
-        }
-        if (error) std::rethrow_exception(error);
+        first = groups[g], size = groups[g + 1] - first;
+        if (n <= 1 || size < minParallel) sweep(first, first + size);  // serial: starting threads would cost more
+        else runShares(n, share);
     }
 }
 
-int sweepThreads(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
+int sweepThreads(int requested) { return requested > 0 ? requested : defaultThreads(); }
 
 void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p,
                           const SweepPlan& plan) {
@@ -129,19 +112,13 @@ void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, con
     }
     start.push_back(static_cast<int>(contacts.size()));
     const int runs = static_cast<int>(start.size()) - 1;
-    std::exception_ptr error;
-#pragma omp parallel for num_threads(threads) if (threads > 1 && increasing && runs >= kParallelGroup)
-    for (int r = 0; r < runs; ++r) {
-        try {
+    forEachShare(runs, increasing ? threads : 1, kParallelGroup, [&](int begin, int end) {
+        for (int r = begin; r < end; ++r)
             for (int k = start[static_cast<size_t>(r)]; k < start[static_cast<size_t>(r) + 1]; ++k) {
                 const CollisionConstraint& c = contacts[static_cast<size_t>(k)];
                 p.col(c.i) += projectCollisionConstraint(p.col(c.i), w[c.i], h, c);
             }
-        } catch (...) {
-            keepFirst(error);
-        }
-    }
-    if (error) std::rethrow_exception(error);
+    });
 }
 
 void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,

@@ -19,6 +19,7 @@
 
 #include "clothlab/core/spring.h"
 #include "clothlab/exercise/01_hooke.h"
+#include "clothlab/sim/team.h"
 
 namespace clothlab {
 
@@ -96,9 +97,15 @@ public:
         solve_ = how;
         index_.clear();  // rebuild the pattern and the solver at the next step
     }
-    /// Threads of the block solver (solver.threads resolved, ≥ 1).
-    /// @param threads  ≥ 1
-    void setThreads(int threads) { threads_ = threads; }
+    /// Threads of the block solver: solver.threads N ≥ 1 fixes N, 0 takes the faster of one thread and
+    /// defaultThreads(), timed per step (AdaptiveTeam, sim/team.h). The same bits either way.
+    /// @param requested  solver.threads, ≥ 0
+    void setThreads(int requested) {
+        team_ = AdaptiveTeam(requested);
+        threads_ = team_.most();
+    }
+    /// How many threads the block solver uses (setThreads()).
+    const AdaptiveTeam& team() const { return team_; }
     /// The relative residual \f$ |b - A\Delta v|_2 / |b|_2 \f$ of the last step's solve (0 before the first).
     double residual() const { return residual_; }
     /// Conjugate-gradient iterations of the last step's solve (0 for Cholesky).
@@ -135,7 +142,8 @@ private:
     Matrix3X f_;                               ///< forces at the start of the step
     VectorX b_;                                ///< right-hand side
     double residual_ = 0.0;                    ///< relative residual of the last solve
-    int threads_ = 1;                          ///< threads of BlockCg
+    int threads_ = 1;                          ///< the most threads of BlockCg
+    AdaptiveTeam team_;                        ///< its threads per step: fixed, or the faster
     /// A spring's block of A, \f$ B = -\Delta t^2 K_{jj} - \Delta t D_{jj} = a\,\hat n\hat n^T + b\,I \f$ (kg).
     struct SpringBlock {
         Vec3 n{0, 0, 0};  ///< unit direction n̂ of the spring

@@ -30,6 +30,7 @@
 #include "clothlab/sim/extensions.h"
 #include "clothlab/sim/simulation.h"
 #include "clothlab/sim/sweeps.h"
+#include "clothlab/sim/team.h"
 
 namespace clothlab {
 
@@ -59,6 +60,9 @@ public:
     const SweepPlan& distancePlan() const { return linkPlan_; }
     /// The colour groups of bendingStencilList() and the threads that sweep them.
     const SweepPlan& bendingPlan() const { return stencilPlan_; }
+    /// How many threads the sweeps use: solver.threads, or for 0 the faster of 1 and all cores, timed
+    /// per step().
+    const AdaptiveTeam& team() const { return team_; }
 
 protected:
     /// rms_bending_error (with bending constraints), max_penetration (with colliders) and
@@ -80,7 +84,8 @@ private:
     PbdCallbacks callbacks_;                 ///< what pbdStep() calls, built once from the scene
     bool xpbd_ = false;                      ///< XPBD instead of PBD
     double subDt_ = 0.0;                     ///< Δt / substeps, s
-    int threads_ = 1;                        ///< threads per colour group (solver.threads, 0 resolved)
+    int threads_ = 1;                        ///< the most threads per colour group (solver.threads, 0 resolved)
+    AdaptiveTeam team_;                      ///< the threads of each iteration: fixed, or the faster (sim/team.h)
     SweepPlan linkPlan_, stencilPlan_;       ///< colour groups of links_ and stencils_
     std::vector<DistanceLink> links_;        ///< distance constraints
     std::vector<BendingStencil> stencils_;   ///< bending constraints

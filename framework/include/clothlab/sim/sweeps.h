@@ -10,8 +10,8 @@
 /// Two cores: the solver orders its constraints by colour (colourOrder()), so that the constraints
 /// of one colour group share no particle. Projecting them in any order, or at the same time, gives
 /// the same positions bit for bit; each sweep runs one group after the other and the constraints of
-/// a group in parallel, each thread one contiguous share (forEachGroupShare(), OpenMP, see
-/// docs/performance.md). With SweepPlan::threads = 1 it is the plain serial loop.
+/// a group in parallel, each thread one contiguous share (forEachGroupShare(), the threads of
+/// sim/team.h, see docs/performance.md). With SweepPlan::threads = 1 it is the plain serial loop.
 #pragma once
 #include <functional>
 #include <vector>
@@ -53,19 +53,21 @@ struct SweepPlan {
 /// @return            the plan
 SweepPlan sweepPlan(const std::vector<Eigen::Vector4i>& particles, int nParticles, int threads);
 
-/// The number of threads for `solver.threads`: the value itself if ≥ 1, else (0) all cores
-/// (OpenMP's omp_get_max_threads(), which follows OMP_NUM_THREADS).
+/// The most threads for `solver.threads`: the value itself if ≥ 1, else (0) defaultThreads() (all
+/// cores, or OMP_NUM_THREADS; with 0 the solver's AdaptiveTeam uses 1 or this many, whichever is faster).
 /// @param requested  solver.threads, ≥ 0
 /// @return           ≥ 1
 int sweepThreads(int requested);
 
 /// The colour-group loop every sweep shares (the solver's sweeps and registered kernels): group after
-/// group, sweep(begin, end) over the items groups[g] .. groups[g+1] − 1 of group g. With threads ≥ 2
-/// and at least minParallel items in the group, each thread sweeps one contiguous share of it at the
-/// same time (the items of a group must be independent); otherwise one call sweeps the whole group.
+/// group, sweep(begin, end) over the items groups[g] .. groups[g+1] − 1 of group g. With
+/// n = teamThreads(threads) ≥ 2 (threads, capped by the solver's AdaptiveTeam) and at least minParallel
+/// items in the group, thread t of n sweeps the share [first + ⌊size·t/n⌋, first + ⌊size·(t+1)/n⌋) of
+/// it at the same time (runShares(); the items of a group must be independent); otherwise one call
+/// sweeps the whole group.
 /// An exception thrown by sweep leaves after its group (the first one, if several threads throw).
 /// @param groups       group boundaries: groups[0] = 0, the last entry the number of items (SweepPlan::groups)
-/// @param threads      threads, ≥ 1
+/// @param threads      the most threads, ≥ 1
 /// @param minParallel  the smallest group, in items, that is split over the threads
 /// @param sweep        sweeps the items [begin, end) in order
 void forEachGroupShare(const std::vector<int>& groups, int threads, int minParallel,
