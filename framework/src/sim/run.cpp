@@ -290,8 +290,8 @@ void RunChecks::finish(const Simulation& sim) {
         else if (!grew && nextCheckpoint_ / 2 < kEnergyFirstVerdict) judgeEnergy(lastWindow_, lastBefore_);
         for (const RunWarning& w : warnings_) grew = grew || w.kind == WarningKind::EnergyGrowth;
         if (!grew) {
-            const std::string order = method_ == "symplectic_euler" ? " (first order: halving solver.dt about halves it)"
-                                    : method_ == "velocity_verlet"  ? " (second order: halving solver.dt about quarters it)" : "";
+            const std::string order = method_ == "symplectic_euler" ? " (first order: halving solver.dt at least halves it)"
+                                    : method_ == "velocity_verlet"  ? " (its error is second order in solver.dt)" : "";
             notes_.push_back("energy error: E - E(0) reached " + num(gMax_) + " E_scale (first above " + num(kEnergyGrowthBound) + " at " +
                              "step " + std::to_string(gAbove_) + ") but stayed bounded: " + method_ +
                              "'s energy oscillates about a fixed level, it does not grow (an accuracy matter, not an instability); a smaller solver.dt narrows it" + order);
