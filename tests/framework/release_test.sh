@@ -9,8 +9,9 @@
 # runs pbd_sphere with `./lab build --reference 05,06`, edits a stage and sees `./lab run` run the edit;
 # a copy released with --no-reference-objects has none, and `--reference` there says so.
 #   release_test.sh SOURCE_ROOT LEAK_CHECK BUILD_DIR [fast]
-# fast: only the release itself (file list, the objects: no source, no debug info, no source path) and
-# the copy without objects; no build of the copy.
+# fast: only the release itself (file list, the objects: no source, no debug info, no source path), the
+# copy configured (not built), and the copy without objects. ./lab test runs fast; the whole test is
+# label heavy (./lab test --heavy): building a second tree takes longer than the rest of ./lab test.
 set -u
 root=$1; leak_check=$2; build_dir=$3; mode=${4:-full}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -50,9 +51,16 @@ grep -q "no reference for stage 05,06" "$tmp/bare-build.log" && grep -q -- "--no
   || fail "--reference in a copy without reference objects: $(cat "$tmp/bare-build.log")"
 [[ ! -e $tmp/bare-build ]] || fail "--reference in a copy without reference objects configured a build before saying no"
 rm -rf "$tmp/bare"
+[[ -f $tmp/copy/.devcontainer/Dockerfile && -f $tmp/copy/.devcontainer/devcontainer.json ]] || fail "the copy lacks the dev container (.devcontainer/)"
 if [[ $mode == fast ]]; then
+  # Without building it: the copy configures on its own (CMake finds every file it names) and takes
+  # its reference objects (made by this machine's compiler) without a warning.
+  cmake -S "$tmp/copy" -B "$tmp/copy-configure" -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 \
+    || { tail -20 "$tmp/configure.log"; fail "the copy does not configure"; }
+  ! grep -q "framework/reference/ holds" "$tmp/configure.log" || fail "the copy ignores its reference objects: $(grep -A2 'framework/reference/ holds' "$tmp/configure.log")"
+  rm -rf "$tmp/copy-configure"
   "$leak_check" "$root" "$tmp/copy" || fail "the copy gives away reference code (lines above)"
-  echo "release copy: the committed files, stubs, stripped reference objects with their compiler; without them on request; no leak"
+  echo "release copy: the committed files, the dev container, stubs, stripped reference objects with their compiler; it configures and takes them; without them on request; no leak"
   exit 0
 fi
 
