@@ -34,8 +34,9 @@ enum class WarningKind {
     FellThrough,   ///< a particle's path in one step reached kFellThroughFactor · h inside a collider
     NotConverged,  ///< RMS edge strain above kNotConvergedRmsStrain for a cloth meant to be inextensible
     Penetration,   ///< a particle more than (kPenetrationFactor − 1) h inside a collider at the end of a step
-    EnergyGrowth   ///< the energy rose above E(0) by more than kEnergyGrowthBound · E_scale and its
-                   ///< envelope kept rising (growth, not a bounded oscillation: RunChecks)
+    EnergyGrowth   ///< the energy rose above E(0) by more than kEnergyGrowthBound · E_scale; for the
+                   ///< symplectic methods only if its envelope kept rising or it passed kEnergyOscillationCap
+                   ///< (growth, not a bounded oscillation: RunChecks)
 };
 
 /// RMS edge strain (1) above which a cloth meant to be inextensible (distance constraints with PBD
@@ -67,6 +68,11 @@ constexpr double kEnvelopeRise = 0.1;
 /// longest period of an energy oscillation that can exceed kEnergyGrowthBound (ω Δt > 0.2). A run
 /// that ends earlier compares its last steps with the ones before them.
 constexpr long long kEnergyFirstVerdict = 64;
+/// The envelope rule is for the symplectic methods (symplectic_euler, velocity_verlet), whose energy
+/// oscillates about a modified energy; for every other method a rise above kEnergyGrowthBound is
+/// EnergyGrowth at once. A rise above this many E_scale is EnergyGrowth for every method: a band that
+/// wide (ω Δt within 10 % of 2) is no result, however bounded.
+constexpr double kEnergyOscillationCap = 10.0;
 
 /// One warning of a run: what, where it started, how bad.
 struct RunWarning {
@@ -213,6 +219,7 @@ private:
     double e0_ = 0.0, eScale_ = 1.0;       ///< E(0) and energyScale(), J
     bool checkEnergy_ = true, checkStrain_ = false;
     std::string method_;                   ///< the scene's solver.method, for the advice
+    bool oscillates_ = false;              ///< symplectic_euler or velocity_verlet: the envelope rule applies
     double gMax_ = 0.0;                    ///< largest g = (E − E0)/E_scale so far
     long long gAbove_ = 0;                 ///< first step with g > kEnergyGrowthBound (0: none)
     double gAboveT_ = 0.0;                 ///< its time, s
