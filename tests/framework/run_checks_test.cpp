@@ -138,10 +138,9 @@ TEST(RunChecks, EnergyVerdictFollowsTheoryForEveryIntegrator) {
             const double crit = theoreticalCriticalDt(m, omega);
             const double base = theoreticalCriticalDt(Method::SymplecticEuler, omega);  // 2/ω
             struct Run { double dt; bool stable; };
-            std::vector<Run> runs;
-            if (m == Method::ExplicitEuler) runs = {{0.5 * base, false}};
-            else if (m == Method::ImplicitEuler) runs = {{0.5 * base, true}, {10 * base, true}};
-            else runs = {{0.5 * crit, true}, {1.5 * crit, false}};
+            const std::vector<Run> runs = m == Method::ExplicitEuler   ? std::vector<Run>{{0.5 * base, false}}
+                                        : m == Method::ImplicitEuler ? std::vector<Run>{{0.5 * base, true}, {10 * base, true}}
+                                                                     : std::vector<Run>{{0.5 * crit, true}, {1.5 * crit, false}};
             for (const Run& run : runs) {
                 std::vector<std::string> s2 = sets;
                 s2.push_back("solver.dt=" + std::to_string(run.dt));
