@@ -67,6 +67,7 @@ function(clothlab_add_sanitize_tests)
     add_test(NAME sanitize.fuzz_replay COMMAND scene_fuzz_replay "${PROJECT_SOURCE_DIR}/scenes"
              "${PROJECT_SOURCE_DIR}/tests/fuzz/seeds" "${PROJECT_SOURCE_DIR}/tests/fuzz/regressions")
     set_tests_properties(sanitize.cli_bad_input sanitize.fuzz_replay PROPERTIES LABELS sanitize ENVIRONMENT "${_env}")
+    set_tests_properties(sanitize.cli_bad_input PROPERTIES COST 40)  # long: started early (tests/CMakeLists.txt)
     return()
   endif()
   if(NOT CLOTHLAB_SANITIZE)
