@@ -307,7 +307,9 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
         run.mounts.push_back({server, "/grade/submission", false});
     }
     // The graded experiments read the student's answers.json from here (tests/test_util.h answersPath).
-    run.env = {{"CLOTHLAB_ANSWERS_DIR", "/grade/answers"}};
+    // One solver thread (OMP_NUM_THREADS, read by the solver's default team size, sim/team.h): the test
+    // and the submission's process share one CPU, where a second thread can only wait for the first.
+    run.env = {{"CLOTHLAB_ANSWERS_DIR", "/grade/answers"}, {"OMP_NUM_THREADS", "1"}};
     if (!answers.empty()) run.mounts.push_back({answers, "/grade/answers", false});
     run.limits.cpu_seconds = timeout_s + 1;
     run.limits.file_size = 16LL << 20;  // its log too
