@@ -86,7 +86,8 @@ fi
 
 # --- grade and compare ----------------------------------------------------------------------------
 start=$(date +%s)
-"$grader" --kit "$kit" --class "$class" --out "$tmp/out" >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the class failed"; }
+# Relative --class and --out, as an instructor types them (the class's build links from other folders).
+(cd "$tmp" && "$grader" --kit "$kit" --class "${class#"$tmp"/}" --out out) >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the class failed"; }
 secs=$(( $(date +%s) - start ))
 book=$tmp/out/gradebook.csv
 [[ -f $book ]] || fail "no gradebook"

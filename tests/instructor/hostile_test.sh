@@ -11,7 +11,13 @@ set -u
 root=$1 grader=$2 kit=$3 mode=$4 only=${5:-.}
 hostile=$root/tests/instructor/hostile
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+# What the reference lost, from its feedback files: the message of each test that did not pass.
+reference_losses() {
+  for f in "$tmp"/out*/feedback/reference.json; do
+    [[ -f $f ]] && jq -r '.. | objects | select(has("passed") and .passed == false) | "  \(.name): \(.message // "" | .[0:300])"' "$f"
+  done
+}
+fail() { echo "FAIL: $*"; [[ $* == *"the reference scores"* ]] && reference_losses; exit 1; }
 [[ -f $hostile/attacks.tsv ]] || fail "$hostile/attacks.tsv: missing"
 
 before=$(cd "$root" && { git status --porcelain 2>/dev/null; cat tests/*.points.json; } | cksum)

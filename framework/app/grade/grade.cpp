@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
     app.add_option("--junit", junit_out, "Write the results as JUnit XML");
     app.add_option("--gradescope", gradescope_out, "Write the results as Gradescope's autograder results.json");
     app.add_option("--markdown", markdown_out, "Write the per-stage table as Markdown (e.g. for GitHub's job summary)");
-    app.add_option("--timeout", timeout_s, "Seconds per test")->check(CLI::PositiveNumber);
+    app.add_option("--timeout", timeout_s, "CPU seconds per test process (the wall clock limit is 3 times that: a busy machine slows a test down, it does not fail it)")->check(CLI::PositiveNumber);
     app.add_option("--jobs", jobs, "Processes at a time")->check(CLI::PositiveNumber);
     app.add_flag("--no-sandbox", no_sandbox, "Run without bubblewrap (the points are then NOT trustworthy)");
     app.add_option("--expect", expect, "Self-check of the test suite: all-pass, all-fail or some-fail")
@@ -96,7 +96,8 @@ int main(int argc, char** argv) {
                 die("--only " + s + ": no such stage");
         if (!class_dir.empty()) {
             if (out_dir.empty()) die("--class needs --out DIR (the gradebook goes there)");
-            ClassOptions c{class_dir, out_dir, jobs, g};
+            // Absolute: the class's build runs the compiler and linker in other folders.
+            ClassOptions c{fs::absolute(class_dir), fs::absolute(out_dir), jobs, g};
             gradeClass(kit, c);
             return 0;
         }

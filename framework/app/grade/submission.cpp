@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
+#include <cstring>
 #include <cstdio>
 #include <iostream>
 #include <mutex>
@@ -149,6 +151,9 @@ std::map<std::string, fs::path> locateStages(const fs::path& root, const Kit& ki
 }
 
 namespace {
+
+/// A test's wall clock limit, in multiples of its CPU time limit (--timeout).
+constexpr int kWallPerCpuSecond = 3;
 
 struct Compiled {
     std::string status = "graded";  // or "rejected", "does not compile"
@@ -311,9 +316,11 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     // and the submission's process share one CPU, where a second thread can only wait for the first.
     run.env = {{"CLOTHLAB_ANSWERS_DIR", "/grade/answers"}, {"OMP_NUM_THREADS", "1"}};
     if (!answers.empty()) run.mounts.push_back({answers, "/grade/answers", false});
-    run.limits.cpu_seconds = timeout_s + 1;
+    // The limit is CPU time, per process (the test's and the submission's): a machine busy with other
+    // work slows a test down, it does not fail it. The wall clock stops a program that waits forever.
+    run.limits.cpu_seconds = timeout_s;
     run.limits.file_size = 16LL << 20;  // its log too
-    run.timeout_seconds = timeout_s;
+    run.timeout_seconds = kWallPerCpuSecond * timeout_s;
     run.log = log;
     run.channel = true;
     run.cpu = cpu;
@@ -328,8 +335,11 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
         else if (line == "end " + name + " passed " + out.secret) ended_passed = true;
         else if (line == "exit " + out.secret) exited = true;
     }
+    const bool cpu_limit = out.exit_code == 128 + SIGXCPU || failures.find(::strsignal(SIGXCPU)) != std::string::npos;
     if (out.timed_out) {
-        r.message = "timed out after " + std::to_string(timeout_s) + " s (an endless loop?)";
+        r.message = "timed out: still running after " + std::to_string(run.timeout_seconds) + " s (waiting forever?)";
+    } else if (cpu_limit) {
+        r.message = "timed out: used more than " + std::to_string(timeout_s) + " s of CPU time (an endless loop?)";
     } else if (!failures.empty()) {
         r.message = failures;
     } else if (!started) {

@@ -54,7 +54,7 @@ struct GradeOptions {
     bool use_reference = true;  ///< the stages not graded link solutions/ (else the submission's own, or the stub)
     std::set<std::string> only;  ///< stages to grade (empty: all)
     int jobs = 1;
-    int timeout_seconds = 30;  ///< per test; after two timeouts a stage's remaining tests are not run
+    int timeout_seconds = 30;  ///< CPU seconds per test process (wall clock: 3 times that); after two timeouts a stage's remaining tests are not run
     bool progress = true;      ///< "grading stage 01 ..." on stderr
     fs::path shared_cache;     ///< objects and binaries shared by submissions with identical files (a class)
 };
