@@ -233,19 +233,40 @@ std::vector<Finding> screenSource(const std::string& text, const std::string& di
 
 // ---- Object screen ------------------------------------------------------------------------------
 
-std::vector<Symbol> symbolsOf(const fs::path& file, bool dynamic) {
-    std::vector<Symbol> out;
-    std::istringstream in(capture(std::string("nm -P ") + (dynamic ? "-D " : "") + shellQuote(file) + " 2>/dev/null"));
+std::map<fs::path, std::vector<Symbol>> symbolsOfEach(const std::vector<fs::path>& files, bool dynamic) {
+    std::map<fs::path, std::vector<Symbol>> out;
+    if (files.empty()) return out;
+    // One nm for all of them (its start-up, plugins included, costs more than reading a file): -A puts
+    // the file, "FILE: " or "ARCHIVE[MEMBER]: ", before each symbol, in the order of the arguments.
+    std::string cmd = std::string("nm -P -A ") + (dynamic ? "-D" : "");
+    for (const auto& f : files) cmd += " " + shellQuote(f);
+    std::istringstream in(capture(cmd + " 2>/dev/null"));
     std::string line;
+    size_t cur = 0;
     while (std::getline(in, line)) {
-        std::istringstream l(line);
+        auto from = [&](size_t i) {
+            const std::string f = files[i].string();
+            return line.size() > f.size() && line.compare(0, f.size(), f) == 0 && (line[f.size()] == ':' || line[f.size()] == '[');
+        };
+        size_t i = cur;
+        while (i < files.size() && !from(i)) ++i;
+        if (i == files.size()) continue;
+        cur = i;
+        const auto colon = line.find(": ", files[i].string().size());
+        if (colon == std::string::npos) continue;
+        std::istringstream l(line.substr(colon + 2));
         std::string name, type;
-        if (!(l >> name >> type) || type.size() != 1 || name.back() == ':') continue;  // "archive.a[member.o]:" headers
+        if (!(l >> name >> type) || type.size() != 1) continue;
         const auto at = name.find('@');  // versioned dynamic symbols: name@@GLIBC_2.2.5
         if (at != std::string::npos) name = name.substr(0, at);
-        out.push_back({name, type[0]});
+        out[files[i]].push_back({name, type[0]});
     }
     return out;
+}
+
+std::vector<Symbol> symbolsOf(const fs::path& file, bool dynamic) {
+    auto each = symbolsOfEach({file}, dynamic);
+    return each.empty() ? std::vector<Symbol>{} : std::move(each.begin()->second);
 }
 
 namespace {
@@ -319,20 +340,14 @@ std::string demangle(const std::string& symbol) {
     return status == 0 && d ? std::string(d.get()) : symbol;
 }
 
-std::set<std::string> definedSymbols(const fs::path& file) {
-    const bool dynamic = file.string().find(".so") != std::string::npos;
-    std::set<std::string> out;
-    for (const auto& s : symbolsOf(file, dynamic))
-        if (std::string("TDBRCVWiu").find(s.type) != std::string::npos) out.insert(s.name);
-    return out;
-}
+bool definesGlobally(char type) { return std::string("TDBRCVWiu").find(type) != std::string::npos; }
 
 std::vector<Finding> screenObject(const fs::path& object, const std::string& display, const ObjectRules& rules) {
     std::vector<Finding> found;
     auto report = [&](const std::string& what) { found.push_back({display, what}); };
     for (const auto& s : symbolsOf(object, false)) {
         const std::string d = demangle(s.name);
-        const bool defined_global = std::string("TDBRCVWiu").find(s.type) != std::string::npos;
+        const bool defined_global = definesGlobally(s.type);
         if (s.type == 'i') { report("defines `" + d + "` as an indirect function (ifunc): not allowed"); continue; }
         if (defined_global) {
             if (rules.own_api.count(s.name)) continue;

@@ -16,6 +16,7 @@
 // sections and no system-call instruction.
 #pragma once
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -54,8 +55,11 @@ struct Symbol {
 /// Every symbol nm lists for an object, archive or (dynamic) shared library.
 std::vector<Symbol> symbolsOf(const fs::path& file, bool dynamic = false);
 
-/// Global symbols an object, archive or shared library defines (nm; dynamic symbols for .so).
-std::set<std::string> definedSymbols(const fs::path& file);
+/// symbolsOf for many files with one nm run (a file nm cannot read maps to no symbols).
+std::map<fs::path, std::vector<Symbol>> symbolsOfEach(const std::vector<fs::path>& files, bool dynamic = false);
+
+/// True for nm's letters of a global definition (text, data, bss, read-only, common, weak, ifunc, unique).
+bool definesGlobally(char type);
 
 /// "symbol" demangled (or itself when it is not a C++ name).
 std::string demangle(const std::string& symbol);

@@ -82,6 +82,17 @@ Kit loadKit(const fs::path& file) {
     for (const auto& e : fs::recursive_directory_iterator(k.include_dir)) fp += stamp(e.path());
     k.fingerprint = hex(fnv1a(fp));
     // Symbols: each stage's own functions; what the rest of the link and the runtime define.
+    std::vector<fs::path> linked = k.main_objects;
+    for (const auto* list : {&k.libs, &k.client_objects, &k.server_objects}) linked.insert(linked.end(), list->begin(), list->end());
+    for (const auto& st : k.stages) {
+        linked.insert(linked.end(), st.tests.begin(), st.tests.end());
+        linked.insert(linked.end(), st.reference.begin(), st.reference.end());
+    }
+    std::vector<fs::path> all = linked;
+    for (const auto& st : k.stages)
+        for (const auto* list : {&st.stub, &st.proxy}) all.insert(all.end(), list->begin(), list->end());
+    std::map<fs::path, std::vector<Symbol>> symbols = symbolsOfEach(all);
+    const auto symbolsOf = [&symbols](const fs::path& f) -> const std::vector<Symbol>& { return symbols[f]; };
     for (auto& st : k.stages) {
         for (const auto& o : st.stub)
             for (const auto& [name, type] : symbolsOf(o)) {
@@ -95,25 +106,20 @@ Kit loadKit(const fs::path& file) {
             for (const auto& [name, type] : symbolsOf(o))
                 if (type == 'T' && name.rfind("__wrap_", 0) == 0) st.wraps.push_back(name.substr(7));
     }
-    std::vector<fs::path> linked = k.main_objects;
-    for (const auto* list : {&k.libs, &k.client_objects, &k.server_objects}) linked.insert(linked.end(), list->begin(), list->end());
-    for (const auto& st : k.stages) {
-        linked.insert(linked.end(), st.tests.begin(), st.tests.end());
-        linked.insert(linked.end(), st.reference.begin(), st.reference.end());
-    }
     for (const auto& f : linked)
         for (const auto& [name, type] : symbolsOf(f)) {
             if (std::string("TDBRCiu").find(type) != std::string::npos) k.linked_symbols.insert(name);
             else if (type == 'W' || type == 'V') k.linked_weak.insert(name);
         }
+    std::vector<fs::path> runtime;
     for (const char* lib : {"libc.so.6", "libm.so.6", "libstdc++.so.6", "libgcc_s.so.1", "libseccomp.so.2"}) {
         std::string path = capture(shellQuote(k.compiler) + " -print-file-name=" + lib);
         path.erase(path.find_last_not_of("\n ") + 1);
-        if (fs::exists(path)) {
-            const auto s = definedSymbols(fs::canonical(path));
-            k.runtime_symbols.insert(s.begin(), s.end());
-        }
+        if (fs::exists(path)) runtime.push_back(fs::canonical(path));
     }
+    for (const auto& [lib, syms] : symbolsOfEach(runtime, true))
+        for (const auto& [name, type] : syms)
+            if (definesGlobally(type)) k.runtime_symbols.insert(name);
     if (k.runtime_symbols.count("malloc") == 0) die("cannot read the C library's symbols (nm from binutils; ./lab setup)");
     return k;
 }
