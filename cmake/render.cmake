@@ -45,23 +45,11 @@ endif()
 message(STATUS "clothlab: offscreen renderer: OSMesa ${CLOTHLAB_HAVE_OSMESA} (clothlab-render), "
                "EGL ${CLOTHLAB_HAVE_EGL} (clothlab-render-egl)")
 
-# Which code each stage runs, for the app's stage panel: "01_hooke=reference;02_mfn=student".
-set(_stage_code "")
-foreach(NN IN LISTS CLOTHLAB_STAGES)
-  if(CLOTHLAB_IMPL_${NN} STREQUAL "stage_${NN}_solutions")
-    list(APPEND _stage_code "${CLOTHLAB_STAGE_DIR_${NN}}=reference")
-  else()
-    list(APPEND _stage_code "${CLOTHLAB_STAGE_DIR_${NN}}=student")
-  endif()
-endforeach()
-string(REPLACE ";" "\\;" _stage_code "${_stage_code}")
-
 file(GLOB _render_src CONFIGURE_DEPENDS src/render/*.cpp src/gui/*.cpp)
 list(FILTER _render_src EXCLUDE REGEX "src/render/offscreen_[a-z]+\\.cpp$")
 add_library(clothlab_render STATIC ${_render_src})
 target_include_directories(clothlab_render PUBLIC ${CLOTHLAB_GL_INCLUDE})
-target_link_libraries(clothlab_render PUBLIC clothlab_framework PkgConfig::CLOTHLAB_IMGUI)
-target_compile_definitions(clothlab_render PRIVATE "CLOTHLAB_STAGE_CODE=\"${_stage_code}\"")
+target_link_libraries(clothlab_render PUBLIC clothlab_framework clothlab_reference_stages PkgConfig::CLOTHLAB_IMGUI)
 
 # The offscreen context (render/offscreen.h), one object library per backend: a program or test links
 # exactly one of them with its GL library. CLOTHLAB_OFFSCREEN_DEFAULT is the backend of the render tests

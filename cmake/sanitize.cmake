@@ -41,16 +41,12 @@ function(clothlab_add_sanitize_tests)
     # and the fuzz target, built the same way, replays the seeds and the regressions.
     set(_io "${PROJECT_SOURCE_DIR}/framework/src/io/scene_json.cpp" "${PROJECT_SOURCE_DIR}/framework/src/io/report.cpp")
     file(GLOB _cli CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/framework/app/main.cpp" "${PROJECT_SOURCE_DIR}/framework/app/cmd_*.cpp")
-    get_source_file_property(_main_defs "${PROJECT_SOURCE_DIR}/framework/app/main.cpp"
-                             DIRECTORY "${PROJECT_SOURCE_DIR}/framework" COMPILE_DEFINITIONS)
     # The loader compiled once for both programs; -O0: these files are template-heavy (JSON, CLI11) and
     # an optimised sanitized build of them took 7 of the build's 25 CPU minutes, for no finding more.
     add_library(clothlab_io_sanitized OBJECT ${_io})
     add_executable(clothlab-sanitized ${_cli})
     add_executable(scene_fuzz_replay "${PROJECT_SOURCE_DIR}/tests/fuzz/scene_fuzz.cpp" "${PROJECT_SOURCE_DIR}/tests/fuzz/replay_main.cpp")
-    set_source_files_properties("${PROJECT_SOURCE_DIR}/framework/app/main.cpp" TARGET_DIRECTORY clothlab-sanitized
-                                PROPERTIES COMPILE_DEFINITIONS "${_main_defs}")
-    target_link_libraries(clothlab-sanitized PRIVATE CLI11::CLI11)
+    target_link_libraries(clothlab-sanitized PRIVATE clothlab_reference_stages CLI11::CLI11)
     clothlab_link_extensions(clothlab-sanitized)
     target_link_libraries(clothlab_io_sanitized PRIVATE clothlab_framework)  # its include paths and definitions
     foreach(_t clothlab_io_sanitized clothlab-sanitized scene_fuzz_replay)

@@ -125,6 +125,15 @@ foreach(NN IN LISTS CLOTHLAB_STAGES)
 endforeach()
 string(REPLACE ";" "," CLOTHLAB_REFERENCE_HAVE "${CLOTHLAB_REFERENCE_HAVE}")
 string(REPLACE ";" "," CLOTHLAB_REFERENCE_USED "${CLOTHLAB_REFERENCE_USED}")
+# Which code each stage runs, for the app's stage panel: "01_hooke=reference;02_mfn=student".
+set(CLOTHLAB_STAGE_CODE "")
+foreach(NN IN LISTS CLOTHLAB_STAGES)
+  if(CLOTHLAB_IMPL_${NN} STREQUAL "stage_${NN}_solutions")
+    string(APPEND CLOTHLAB_STAGE_CODE "${CLOTHLAB_STAGE_DIR_${NN}}=reference;")
+  else()
+    string(APPEND CLOTHLAB_STAGE_CODE "${CLOTHLAB_STAGE_DIR_${NN}}=student;")
+  endif()
+endforeach()
 # The compiler of this build, for ./lab release (framework/reference/compiler.txt in the student copy).
 cmake_host_system_information(RESULT _distro QUERY DISTRIB_PRETTY_NAME)
 file(CONFIGURE OUTPUT "${_refobj_out}/compiler.txt" CONTENT "compiler_id=${CMAKE_CXX_COMPILER_ID}

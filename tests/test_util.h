@@ -6,6 +6,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -169,15 +170,22 @@ inline std::string answersPath(const char* stageDir) {
     return std::string(CLOTHLAB_ANSWERS_DEFAULT_DIR) + "/" + stageDir + "/answers.json";
 }
 
+/// The answers file as the student knows it, for messages: exercises/<stageDir>/answers.json when the
+/// grader copied it into its sandbox (CLOTHLAB_ANSWERS_DIR), else answersPath().
+/// @param stageDir  the stage's folder name, e.g. "01_hooke"
+inline std::string answersShownAs(const char* stageDir) {
+    if (const char* dir = std::getenv("CLOTHLAB_ANSWERS_DIR"); dir && *dir) return std::string("exercises/") + stageDir + "/answers.json";
+    return answersPath(stageDir);
+}
+
 /// Reads the number the student entered for `field` from answersPath(stageDir) into *value. A missing
 /// or unreadable file, malformed JSON, a missing field or a null (not measured yet) is a failure whose
 /// message names the file and the field; nothing throws.
 inline testing::AssertionResult readAnswer(const char* stageDir, const std::string& field, double* value) {
-    const std::string path = answersPath(stageDir);
-    std::ifstream in(path);
+    const std::string path = answersShownAs(stageDir);
+    std::ifstream in(answersPath(stageDir));
     if (!in)
-        return testing::AssertionFailure() << path << ": cannot read the answers file (exercises/" << stageDir
-                                           << "/answers.json in your copy; the task sheet's \"Experiments\" says what to measure)";
+        return testing::AssertionFailure() << path << ": cannot read the answers file (the task sheet's \"Experiments\" says what to measure)";
     const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
     if (doc.is_discarded()) return testing::AssertionFailure() << path << ": not valid JSON (check commas, quotes and brackets)";
     if (!doc.is_object() || !doc.contains(field))
@@ -198,14 +206,20 @@ inline testing::AssertionResult readAnswer(const char* stageDir, const std::stri
 /// The final value of metric `name` after a run of a scene as `./lab run SCENE --set ... --quiet` prints it
 /// in its summary: solver.steps steps of the scene (its JSON text, e.g. kScene_pbd_curtain from
 /// experiment_scenes.h) with the overrides, through whichever code this binary links for each stage.
+/// @throws std::runtime_error when that run stops (the code under test blew up): the test fails with
+///         this one message, "your code's run of ... was unstable at step N ...", and grades nothing
 inline double finalMetric(const char* sceneText, const std::string& file, const std::vector<std::string>& sets, const std::string& name) {
     const Scene scene = parseScene(sceneText, file, sets);
     auto sim = makeSimulation(scene);
     const RunResult r = runSimulation(*sim, scene.solver.steps, scene.solver.steps);
-    if (r.unstable) return std::nan("");
+    std::string with;
+    for (const auto& s : sets) with += " --set " + s;
+    if (r.unstable)
+        throw std::runtime_error("your code's run of " + file + with + " (the experiment's expected value comes from it) was " +
+                                 r.message + ": the stage's other tests show where");
     for (const Metric& m : sim->metrics())
         if (m.name == name) return m.value;
-    return std::nan("");
+    throw std::runtime_error(file + ": the run reports no metric " + name);
 }
 
 /// Grades one measured number: the answer in `field` must lie within `tolerance` of `expected`.
@@ -217,7 +231,7 @@ inline testing::AssertionResult gradeAnswer(const char* stageDir, const std::str
     if (!read) return read;
     if (std::abs(answer - expected) <= tolerance) return testing::AssertionSuccess();
     const auto [a, e] = numPair(answer, expected);
-    return testing::AssertionFailure() << answersPath(stageDir) << ": " << field << " (" << what << "): you entered " << a
+    return testing::AssertionFailure() << answersShownAs(stageDir) << ": " << field << " (" << what << "): you entered " << a
                                        << ", physics expects " << e << " within " << num(tolerance) << ": " << why;
 }
 

@@ -31,7 +31,7 @@ void addRunCommand(CLI::App& app, int& exit_code) {
     cmd->add_option("--out", opt->out, "Folder for report.csv, summary.json and state.csv");
     cmd->add_flag("--quiet", opt->quiet, "Print only the summary");
     cmd->add_flag("--strict", opt->strict,
-                  "A warning (not converged, penetration, fell through a collider, energy growth) is an error: exit 3 like a blow-up");
+                  "A warning (a pinned particle moved, not converged, penetration, fell through a collider, energy growth) stops the run: exit 3 like a blow-up");
     cmd->callback([opt, &exit_code] {
         const Scene scene = loadScene(opt->scene, opt->sets);
         long long steps = opt->steps >= 0 ? opt->steps : scene.solver.steps;
@@ -50,12 +50,14 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                   << "method  " << methodName(scene.solver.method) << "   dt = " << scene.solver.dt << " s   steps = " << steps
                   << "   particles = " << sim->state().size() << "\n";
         bool header = false;
-        const RunResult result = runSimulation(*sim, steps, every, [&](const ReportRow& row) {
-            if (opt->quiet) return;
-            if (!header) printReportHeader(std::cout, row), header = true;
-            printReportRow(std::cout, row);
-        });
-        if (result.unstable) std::cout << result.message << "\n";
+        const RunResult result = runSimulation(
+            *sim, steps, every,
+            [&](const ReportRow& row) {
+                if (opt->quiet) return;
+                if (!header) printReportHeader(std::cout, row), header = true;
+                printReportRow(std::cout, row);
+            },
+            opt->strict);
         printSummary(std::cout, *sim, result);
         if (!opt->out.empty()) {
             std::filesystem::create_directories(opt->out);
@@ -69,7 +71,8 @@ void addRunCommand(CLI::App& app, int& exit_code) {
             std::cerr << "error: " << scene.file << ": solver: " << result.message << "\n";
             exit_code = Unstable;
         } else if (opt->strict && !result.warnings.empty()) {
-            std::cerr << "error: " << scene.file << ": solver: --strict: " << warningText(result.warnings.front(), scene)
+            // A warning that fired as the run ended (e.g. not converged at the last step): its text is in the summary.
+            std::cerr << "error: " << scene.file << ": solver: --strict: " << warningHeadline(result.warnings.front(), scene)
                       << (result.warnings.size() > 1 ? " (and " + std::to_string(result.warnings.size() - 1) + " more warnings in the summary)" : "")
                       << "\n";
             exit_code = Unstable;

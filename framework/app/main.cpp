@@ -3,7 +3,7 @@
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/core/not_implemented.h"
-#include "stub_advice.h"
+#include "clothlab/core/stub_advice.h"
 #include "commands.h"
 
 int main(int argc, char** argv) {
@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
         std::cerr << "error: " << e.what() << "\n";
         return clothlab::cli::BadInput;
     } catch (const clothlab::NotImplemented& e) {
-        std::cerr << e.what() << clothlab::cli::stubAdvice(e.what()) << "\n";
+        std::cerr << e.what() << clothlab::stubAdvice(e.what()) << "\n";
         return clothlab::cli::NotImplementedYet;
     } catch (const std::exception& e) {
         std::cerr << "error: internal: " << e.what() << "\n";

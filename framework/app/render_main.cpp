@@ -21,7 +21,7 @@
 #include "clothlab/core/input_error.h"
 #include "clothlab/sim/run.h"
 #include "clothlab/core/not_implemented.h"
-#include "stub_advice.h"
+#include "clothlab/core/stub_advice.h"
 #include "clothlab/gui/app.h"
 #include "clothlab/io/report.h"
 #include "clothlab/io/scene_json.h"
@@ -134,7 +134,6 @@ int runRender(const RenderArgs& a) {
     result.wall = seconds(t0, Clock::now());
     if (!result.unstable) checks.finish(*sim);
     checks.collect(result);
-    if (result.unstable) std::cout << result.message << "\n";
     printSummary(std::cout, *sim, result);
 
     // 2) One camera for the whole clip, fitted to everything that moves (or the scene's own).
@@ -294,7 +293,7 @@ int main(int argc, char** argv) {
         std::cerr << "error: renderer: " << e.what() << "\n";
         return 4;
     } catch (const NotImplemented& e) {
-        std::cerr << e.what() << clothlab::cli::stubAdvice(e.what()) << "\n";
+        std::cerr << e.what() << clothlab::stubAdvice(e.what()) << "\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "error: internal: " << e.what() << "\n";

@@ -13,7 +13,7 @@ namespace {
 Vec3 pairDirection(const Vec3& pi, const Vec3& pj) {
     const Vec3 diff = pi - pj;
     const double len = diff.norm();
-    return len > 0.0 ? Vec3(diff / len) : Vec3(0, 1, 0);
+    return len >= 1e-12 ? Vec3(diff / len) : Vec3(0, 1, 0);  // degenerate: +y
 }
 }  // namespace
 

@@ -1,11 +1,11 @@
-// The advice a program prints when a scene reaches an unfinished task (framework/app/stub_advice.h):
+// The advice a program prints when a scene reaches an unfinished task (framework/include/clothlab/core/stub_advice.h):
 // the exact ./lab build --reference command where the stage has a reference (with the stages the
 // build already takes from it), and finishing the task where it has none (a copy without objects).
 #include <gtest/gtest.h>
 
-#include "../../framework/app/stub_advice.h"
+#include "clothlab/core/stub_advice.h"
 
-using clothlab::cli::stubAdvice;
+using clothlab::stubAdvice;
 
 TEST(StubAdvice, NamesTheReferenceCommandWithTheStagesAlreadyUsed) {
     const std::string a = stubAdvice("not implemented: exercise 4.2 projectDistanceConstraint", "01,02,03,04,05,06", "05,06");

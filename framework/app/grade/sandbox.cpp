@@ -169,7 +169,10 @@ RunOutcome runSandboxed(const SandboxRun& run) {
             CPU_SET(run.cpu, &set);
             ::sched_setaffinity(0, sizeof set, &set);
         }
-        setLimit(RLIMIT_CPU, static_cast<rlim_t>(run.limits.cpu_seconds));
+        {  // SIGXCPU at the limit, SIGKILL a second later for a program that ignores SIGXCPU
+            const struct rlimit cpu {static_cast<rlim_t>(run.limits.cpu_seconds), static_cast<rlim_t>(run.limits.cpu_seconds) + 1};
+            ::setrlimit(RLIMIT_CPU, &cpu);
+        }
         setLimit(RLIMIT_AS, static_cast<rlim_t>(run.limits.address_space));
         setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(run.limits.file_size));
         setLimit(RLIMIT_NOFILE, static_cast<rlim_t>(run.limits.open_files));
@@ -224,6 +227,7 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     }
     ::kill(-pid, SIGKILL);  // whatever the program left in its group
     out.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+
     return out;
 }
 

@@ -341,7 +341,13 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
         else if (line == "end " + name + " passed " + out.secret) ended_passed = true;
         else if (line == "exit " + out.secret) exited = true;
     }
-    const bool cpu_limit = out.exit_code == 128 + SIGXCPU || failures.find(::strsignal(SIGXCPU)) != std::string::npos;
+    // The CPU limit: the kernel ends a process there with SIGXCPU, or a second later with SIGKILL
+    // when it ignores SIGXCPU (nothing else in the sandbox may send SIGKILL: seccomp), the test's
+    // process (its exit status) or the submission's (the test's failure names the signal).
+    const auto by = [&](int sig) {
+        return out.exit_code == 128 + sig || failures.find("signal " + std::to_string(sig) + ", " + ::strsignal(sig)) != std::string::npos;
+    };
+    const bool cpu_limit = by(SIGXCPU) || by(SIGKILL);
     if (out.timed_out) {
         r.message = "timed out: still running after " + std::to_string(run.timeout_seconds) + " s (waiting forever?)";
     } else if (cpu_limit) {

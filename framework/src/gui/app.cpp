@@ -15,11 +15,7 @@
 #include "clothlab/io/scene_json.h"
 #include "clothlab/render/overlay.h"
 #include "clothlab/sim/run.h"
-#include "../../app/stub_advice.h"
-
-#ifndef CLOTHLAB_STAGE_CODE
-#define CLOTHLAB_STAGE_CODE ""
-#endif
+#include "clothlab/core/stub_advice.h"
 
 namespace clothlab {
 
@@ -41,11 +37,34 @@ void push(std::deque<float>& q, double v) {
     if (q.size() > kHistory) q.pop_front();
 }
 
-void plot(const char* label, const std::deque<float>& q, const char* unit) {
+// "2.5 us", "1.20 ms", "0.31 s": a duration in the unit that shows it.
+std::string duration(double ms) {
+    char b[32];
+    if (ms < 0.1) std::snprintf(b, sizeof b, "%.3g us", ms * 1e3);
+    else if (ms < 1000) std::snprintf(b, sizeof b, "%.3g ms", ms);
+    else std::snprintf(b, sizeof b, "%.3g s", ms / 1e3);
+    return b;
+}
+
+// "1 spring", "3 springs".
+std::string count(size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+
+// A plot with its scale: the top and bottom of the y axis (the samples' maximum and minimum, with
+// the unit), the last value, and the x axis (the last n samples, one per frame, over t0..t1 s).
+void plot(const char* label, const std::deque<float>& q, const char* unit, double t0, double t1) {
+    if (std::string(unit) == "1") unit = "";  // a fraction (strain): no unit to print
     std::vector<float> v(q.begin(), q.end());
-    char overlay[64] = "";
-    if (!v.empty()) std::snprintf(overlay, sizeof overlay, "%.4g %s", v.back(), unit);
-    ImGui::PlotLines(label, v.data(), static_cast<int>(v.size()), 0, overlay, FLT_MAX, FLT_MAX, ImVec2(0, 56));
+    if (v.empty()) {
+        ImGui::TextDisabled("%s: no samples yet", label);
+        return;
+    }
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "last %.4g %s", v.back(), unit);
+    ImGui::Text("%s   max %.4g %s", label, *hi, unit);
+    ImGui::PlotLines((std::string("##") + label).c_str(), v.data(), static_cast<int>(v.size()), 0, overlay, *lo, *hi,
+                     ImVec2(-1, 56));
+    ImGui::TextDisabled("min %.4g %s   span %.3g %s   over t = %.3g .. %.3g s (%zu frames)", *lo, unit, *hi - *lo, unit, t0, t1, v.size());
 }
 
 // Stage number of "not implemented: exercise N.M name" (0 if none).
@@ -55,10 +74,22 @@ int stageOfMessage(const std::string& msg) {
     return std::atoi(msg.c_str() + p + 9);
 }
 
-// A slider on a double; true when the user let go of it after a change.
+// "dt = 0.00100 s###dt [s]": the value beside the slider, where its handle cannot cover it (the ID
+// after ### stays the same while the value changes). `label` is "name [unit]".
+std::string valueLabel(const char* label, const char* fmt, double v) {
+    const std::string l = label;
+    const auto open = l.find(" ["), close = l.rfind(']');
+    const std::string name = open == std::string::npos ? l : l.substr(0, open);
+    const std::string unit = open == std::string::npos || close == std::string::npos ? "" : " " + l.substr(open + 2, close - open - 2);
+    char value[48];
+    std::snprintf(value, sizeof value, fmt, v);
+    return name + " = " + value + (unit == " 1" ? "" : unit) + "###" + l;
+}
+
+// A slider on a double, its value shown beside it; true when the user let go of it after a change.
 bool sliderD(const char* label, double& v, double lo, double hi, const char* fmt, bool log = false) {
     float f = static_cast<float>(v);
-    ImGui::SliderFloat(label, &f, static_cast<float>(lo), static_cast<float>(hi), fmt,
+    ImGui::SliderFloat(valueLabel(label, fmt, v).c_str(), &f, static_cast<float>(lo), static_cast<float>(hi), "",
                        log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
     if (ImGui::IsItemActive() || ImGui::IsItemDeactivatedAfterEdit()) v = f;
     return ImGui::IsItemDeactivatedAfterEdit();
@@ -113,7 +144,7 @@ DrawData waveCloth(int n, double t) {
 }
 
 App::App(const AppOptions& options) : options_(options) {
-    stages_ = parseStageCode(CLOTHLAB_STAGE_CODE);
+    stages_ = parseStageCode(stageCode());
     std::error_code ec;
     if (!options_.scenes_dir.empty())
         for (const auto& e : std::filesystem::directory_iterator(options_.scenes_dir, ec))
@@ -138,7 +169,7 @@ bool App::load(const std::string& path) {
     all_colliders_ = original_.colliders;
     collider_on_.assign(all_colliders_.size(), 1);
     user_pins_.clear();
-    energy_.clear(), error_.clear(), step_ms_.clear();
+    energy_.clear(), error_.clear(), step_ms_.clear(), sample_t_.clear();
     camera_set_ = false;
     view_.color_by_strain = options_.strain;
     view_.edges = options_.strain ? true : options_.edges < 0 ? (scene_.model != Model::Cloth && options_.wave_grid < 2) : options_.edges == 1;
@@ -178,7 +209,7 @@ void App::rebuild(bool keep_state) {
             if (pinned) st.w[i] = 0.0;
             else if (st.w[i] == 0.0) st.w[i] = 1.0;
         }
-    if (!keep_state) energy_.clear(), error_.clear(), step_ms_.clear(), steps_ = 0;
+    if (!keep_state) energy_.clear(), error_.clear(), step_ms_.clear(), sample_t_.clear(), steps_ = 0;
 }
 
 std::vector<std::string> App::warnings() const {
@@ -251,14 +282,18 @@ void App::pushSample() {
         if (x.name == "energy") energy = x.value;
         const bool is_error = x.name == "error" || x.name.find("constraint") != std::string::npos ||
                               x.name.find("strain") != std::string::npos;
-        if (is_error && std::isnan(err)) err = x.value, error_name_ = x.name + " [" + x.unit + "]";
+        if (is_error && std::isnan(err)) err = x.value, error_name_ = x.name, error_unit_ = x.unit;
     }
     if (std::isnan(err))
         for (const Metric& x : m)
-            if (x.name == "energy_drift") err = x.value, error_name_ = "energy drift [J]";
+            if (x.name == "energy_drift") err = x.value, error_name_ = "energy drift", error_unit_ = "J";
     if (!std::isnan(energy)) push(energy_, energy);
     if (!std::isnan(err)) push(error_, err);
     push(step_ms_, last_step_ms_);
+    // The time the plots span: from the oldest sample kept to now.
+    sample_t_.push_back(sim_->state().t);
+    if (sample_t_.size() > kHistory) sample_t_.pop_front();
+    plot_span_ = sample_t_.back() - sample_t_.front();
 }
 
 void App::handleMouse(int width, int height) {
@@ -285,6 +320,7 @@ void App::handleMouse(int width, int height) {
                         if (st.w[k] > 0) sum += st.w[k], ++n;
                     st.w[i] = n ? sum / n : 1.0;
                 }
+                checks_.reset();  // the pins changed: the run checks start again (run.h)
             }
         }
         if (ImGui::IsMouseClicked(0)) {
@@ -429,7 +465,12 @@ void App::panelScene() {
     if (!status_.empty()) ImGui::TextDisabled("%s", status_.c_str());
     float sp = static_cast<float>(speed_);
     if (ImGui::SliderFloat("speed", &sp, 0.01f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) speed_ = sp;
-    if (sim_) ImGui::Text("%d particles, %zu edges, step %.3f ms", sim_->state().size(), sim_->edges().size(), last_step_ms_);
+    if (sim_) {
+        const bool constraints = isPositionBased(scene_.solver.method);
+        ImGui::Text("%s, %s, step %s", count(static_cast<size_t>(sim_->state().size()), "particle", "particles").c_str(),
+                    count(sim_->edges().size(), constraints ? "constraint edge" : "spring", constraints ? "constraint edges" : "springs").c_str(),
+                    duration(last_step_ms_).c_str());
+    }
 }
 
 void App::panelParameters() {
@@ -541,15 +582,16 @@ void App::panelStages() {
             ImGui::PushStyleColor(ImGuiCol_Text, kRed);
             ImGui::TextWrapped("  %s", stub_hit_.c_str());
             ImGui::PopStyleColor();
-            ImGui::TextWrapped("%s", clothlab::cli::stubAdvice(stub_hit_).c_str());  // what to do, in this copy
+            ImGui::TextWrapped("%s", stubAdvice(stub_hit_).c_str());  // what to do, in this copy
         }
     }
 }
 
 void App::panelPlots() {
-    plot("energy", energy_, "J");
-    plot(error_name_.empty() ? "error" : error_name_.c_str(), error_, "");
-    plot("step [ms]", step_ms_, "ms");
+    const double t1 = sim_ ? sim_->state().t : 0.0, t0 = std::max(0.0, t1 - plot_span_);
+    plot("energy", energy_, "J", t0, t1);
+    plot(error_name_.empty() ? "error" : error_name_.c_str(), error_, error_unit_.c_str(), t0, t1);
+    plot("step time", step_ms_, "ms", t0, t1);
 }
 
 }  // namespace clothlab

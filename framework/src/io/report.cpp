@@ -48,7 +48,7 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
                   r.steps, sim.state().t, r.wall, per_step * 1e6);
     out << buf;
     if (r.unstable && !r.rows.empty())
-        out << "  (stopped: " << r.message << "; the metrics below are of the last report row, step " << r.rows.back().step << ")\n";
+        out << "  (stopped early, at step " << r.steps << ": the metrics below are of the last report row, step " << r.rows.back().step << ")\n";
     if (!r.rows.empty())
         for (const Metric& m : r.rows.back().metrics) {
             std::snprintf(buf, sizeof buf, "  %-22s %14.6e %s\n", m.name.c_str(), m.value, m.unit.c_str());
@@ -109,6 +109,8 @@ void writeSummaryJson(const std::string& path, const Simulation& sim, const RunR
     for (const RunWarning& w : r.warnings) {
         nlohmann::json x = {{"kind", warningName(w.kind)}, {"step", w.step}, {"t", w.t}, {"value", w.value}, {"message", warningText(w, sim.scene())}};
         if (w.collider >= 0) x["collider"] = w.collider, x["particle"] = w.particle, x["particles"] = w.count;
+        if (w.kind == WarningKind::PinMoved) x["particle"] = w.particle, x["particles"] = w.count;
+        if (!w.pass.empty()) x["pass"] = w.pass;
         j["warnings"].push_back(x);
     }
     j["passes"] = nlohmann::json::array();

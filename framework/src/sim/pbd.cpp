@@ -95,6 +95,7 @@ void PbdSimulation::step() {
         std::fill(linkLambda_.begin(), linkLambda_.end(), 0.0);  // XPBD: λ = 0 at the start of every (sub)step
         std::fill(bendLambda_.begin(), bendLambda_.end(), 0.0);
         auto timed = timer_.time(stepPass_);  // the passes called back from pbdStep() are booked on their own
+        firstIteration_ = true;
         pbdStep(P_, callbacks_, scene_.pbd.damping, sv.iterations, subDt_);  // lines (5)-(16), exercise 3.3
     }
     P_.t += sv.dt;
@@ -157,27 +158,40 @@ void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
     }
 }
 
+// Lines (9)-(11): each constraint type the scene uses, one pass each.
 void PbdSimulation::projectConstraints(Matrix3X& p) {
     const VectorX& w = P_.w;
     const double dt2 = subDt_ * subDt_;
-    if (distancePass_ >= 0) {
-        auto timed = timer_.time(distancePass_);
-        if (xpbd_) distanceSweep_.xpbd(w, scene_.constraints.distance.compliance / dt2, linkLambda_, p);
-        else distanceSweep_.pbd(w, kDistance_, p);
+    checkPins(p, stepPass_);  // lines (5)-(7) predicted p
+    if (distancePass_ >= 0)
+        constraintPass(distancePass_, true, p, [&](Matrix3X& q) {
+            if (xpbd_) distanceSweep_.xpbd(w, scene_.constraints.distance.compliance / dt2, linkLambda_, q);
+            else distanceSweep_.pbd(w, kDistance_, q);
+        });
+    if (bendingPass_ >= 0)
+        constraintPass(bendingPass_, true, p, [&](Matrix3X& q) {
+            if (xpbd_) bendingSweep_.xpbd(w, scene_.constraints.bending.compliance / dt2, bendLambda_, q);
+            else bendingSweep_.pbd(w, kBending_, q);
+        });
+    if (collisionPass_ >= 0)
+        constraintPass(collisionPass_, false, p, [&](Matrix3X& q) { projectCollisionSweep(contacts_, w, scene_.solver.thickness, q, threads_); });
+    if (selfPass_ >= 0)
+        constraintPass(selfPass_, true, p, [&](Matrix3X& q) {
+            projectSelfCollisionSweep(selfPairs_, P_.x, w, scene_.self_collision.friction, q);  // exercises 7.5, 7.6
+        });
+    firstIteration_ = false;
+}
+
+template <class Project>
+void PbdSimulation::constraintPass(int pass, bool internal, Matrix3X& p, Project project) {
+    const bool momentum = internal && firstIteration_ && !hasPins();
+    if (momentum) before_ = p;
+    {
+        auto timed = timer_.time(pass);
+        project(p);
     }
-    if (bendingPass_ >= 0) {
-        auto timed = timer_.time(bendingPass_);
-        if (xpbd_) bendingSweep_.xpbd(w, scene_.constraints.bending.compliance / dt2, bendLambda_, p);
-        else bendingSweep_.pbd(w, kBending_, p);
-    }
-    if (collisionPass_ >= 0) {
-        auto timed = timer_.time(collisionPass_);
-        projectCollisionSweep(contacts_, w, scene_.solver.thickness, p, threads_);
-    }
-    if (selfPass_ >= 0) {
-        auto timed = timer_.time(selfPass_);
-        projectSelfCollisionSweep(selfPairs_, P_.x, w, scene_.self_collision.friction, p);  // exercises 7.5, 7.6
-    }
+    checkPins(p, pass);  // a pinned particle (w = 0) has not moved
+    if (momentum) checkMomentum(before_, p, pass);  // constraints between particles keep the momentum
 }
 
 double PbdSimulation::rmsBendingError() const {

@@ -36,6 +36,19 @@ bool meantInextensible(const Scene& s) {
     return s.solver.method == Method::Pbd ? s.constraints.distance.stiffness >= 1.0 : s.constraints.distance.compliance == 0.0;
 }
 
+// "the pass 'constraints: distance' (stage 04, exercise 4.3)": the pass that moved a pin, and where
+// its code is; without a pass (a method that does not check its passes): the method's step.
+std::string movedBy(const RunWarning& w, const Scene& s) {
+    static const std::vector<std::pair<std::string, std::string>> stages = {
+        {"constraints: distance", "stage 04, exercise 4.3"}, {"constraints: bending", "stage 05, exercise 5.2"},
+        {"constraints: collision", "stage 06"}, {"constraints: self-collision", "stage 07"},
+        {"damp, predict, update", "stage 03, lines (5)-(7)"}};
+    if (w.pass.empty()) return std::string("the ") + methodName(s.solver.method) + " step";
+    for (const auto& [pass, where] : stages)
+        if (w.pass.find(pass) != std::string::npos) return "the pass '" + w.pass + "' (" + where + ")";
+    return "the pass '" + w.pass + "'";
+}
+
 }  // namespace
 
 const char* causeName(StopCause c) {
@@ -45,12 +58,15 @@ const char* causeName(StopCause c) {
         case StopCause::VelocityNotFinite: return "velocity_not_finite";
         case StopCause::LeftRegion: return "left_region";
         case StopCause::SolverFailure: return "solver_failure";
+        case StopCause::Strict: return "strict";
     }
     return "none";
 }
 
 const char* warningName(WarningKind k) {
     switch (k) {
+        case WarningKind::PinMoved: return "pin_moved";
+        case WarningKind::MomentumCreated: return "momentum_created";
         case WarningKind::NotConverged: return "not_converged";
         case WarningKind::Penetration: return "penetration";
         case WarningKind::FellThrough: return "fell_through";
@@ -64,6 +80,16 @@ std::string warningText(const RunWarning& w, const Scene& s) {
     const std::string h = num(sv.thickness) + " m";
     std::ostringstream m;
     switch (w.kind) {
+        case WarningKind::PinMoved:
+            m << "pinned particle moved: particle " << w.particle << " (w = 0, infinite mass) moved " << num(w.value) << " m by " << since(w)
+              << (w.count > 1 ? " (" + std::to_string(w.count) + " pinned particles moved)" : "") << ", moved by " << movedBy(w, s)
+              << ": a pinned particle never moves; every correction must be weighted by the inverse mass w (0 for a pin)";
+            break;
+        case WarningKind::MomentumCreated:
+            m << "momentum created: at " << since(w) << " " << movedBy(w, s) << " changed the cloth's linear momentum by "
+              << percent(w.value) << " of the momentum it moved (|sum m_i dp_i| / sum m_i |dp_i|): constraints between particles "
+              << "must keep it (m_1 dp_1 + m_2 dp_2 + ... = 0; the gradients of a constraint sum to zero)";
+            break;
         case WarningKind::NotConverged:
             m << "not converged: the RMS edge strain has stayed above " << percent(kNotConvergedRmsStrain) << " since " << since(w)
               << " (last " << percent(w.value) << ", max " << percent(w.extra) << "): the distance constraints are far from solved, "
@@ -107,6 +133,8 @@ std::string warningText(const RunWarning& w, const Scene& s) {
 
 std::string warningHeadline(const RunWarning& w, const Scene& s) {
     switch (w.kind) {
+        case WarningKind::PinMoved: return "pinned particle " + std::to_string(w.particle) + " moved by " + movedBy(w, s) + " at " + since(w);
+        case WarningKind::MomentumCreated: return "momentum created by " + movedBy(w, s) + " at " + since(w);
         case WarningKind::FellThrough: return "fell through " + colliderName(s, w.collider) + " at " + since(w);
         case WarningKind::NotConverged: return "not converged: RMS strain " + percent(w.value) + " since " + since(w);
         case WarningKind::Penetration: return "penetration " + num(w.value) + " m into " + colliderName(s, w.collider) + " at " + since(w);
@@ -130,6 +158,7 @@ std::string stopReason(StopCause c, double bound, const std::string& detail) {
         case StopCause::LeftRegion:
             return "a particle left the region |x| < " + num(bound, 6) + " m (report.blowup): the state is finite but has blown up";
         case StopCause::SolverFailure: return detail.empty() ? "the solver could not take the step" : detail;
+        case StopCause::Strict: return detail.empty() ? "a warning (--strict)" : detail;
     }
     return "";
 }
@@ -171,9 +200,13 @@ double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double dept
     return lowest;
 }
 
-RunChecks::RunChecks(const Simulation& sim) {
+RunChecks::RunChecks(const Simulation& sim, bool strict) : strict_(strict) {
     const Scene& sc = sim.scene();
     const State& s = sim.state();
+    for (int i = 0; i < s.size(); ++i)
+        if (s.w[i] == 0.0) pins_.push_back(i);
+    pinAt_.resize(3, static_cast<Eigen::Index>(pins_.size()));
+    for (size_t k = 0; k < pins_.size(); ++k) pinAt_.col(static_cast<Eigen::Index>(k)) = s.x.col(pins_[k]);
     e0_ = sim.energy();
     eScale_ = energyScale(sim);
     // Wind feeds energy in; pins moved onto hooks ("to") start the cloth away from its rest shape, and
@@ -251,10 +284,40 @@ std::string RunChecks::step(Simulation& sim, long long step) {
     if (!watch_.empty()) xOld_ = sim.state().x;
     const std::string stop = stepAndCheck(sim, step, sim.scene().report.blowup, &cause_);
     if (!stop.empty()) return stop;
+    const size_t before = warnings_.size();
+    if (!pins_.empty()) checkPins(sim, step);
+    if (!sim.momentumCreatedBy().empty() && std::none_of(warnings_.begin(), warnings_.end(), [](const RunWarning& w) {
+            return w.kind == WarningKind::MomentumCreated;
+        })) {
+        RunWarning& w = warn(WarningKind::MomentumCreated, step, sim.state().t);
+        w.pass = sim.momentumCreatedBy(), w.value = sim.momentumCreated();
+    }
     if (!watch_.empty()) checkColliders(sim, step);
     if (checkStrain_) checkStrain(sim, step);
     if (checkEnergy_) checkEnergy(sim, step);
+    if (strict_ && warnings_.size() > before) {
+        cause_ = StopCause::Strict;
+        // The headline: the warning's whole text is in the run's warnings (said once).
+        return "stopped at step " + std::to_string(step) + " by --strict: " + warningHeadline(warnings_.back(), sim.scene());
+    }
     return "";
+}
+
+void RunChecks::checkPins(const Simulation& sim, long long step) {
+    for (const RunWarning& w : warnings_)
+        if (w.kind == WarningKind::PinMoved) return;  // reported once, at the step it happened
+    const State& s = sim.state();
+    int moved = 0, first = -1;
+    double distance = 0.0;
+    for (size_t k = 0; k < pins_.size(); ++k) {
+        const double d = (s.x.col(pins_[k]) - pinAt_.col(static_cast<Eigen::Index>(k))).norm();
+        if (d > 0.0 && s.w[pins_[k]] == 0.0) {  // (still pinned: the app may release a pin)
+            if (moved++ == 0) first = pins_[k], distance = d;
+        }
+    }
+    if (moved == 0) return;
+    RunWarning& w = warn(WarningKind::PinMoved, step, sim.state().t);
+    w.particle = first, w.count = moved, w.value = distance, w.pass = sim.pinMovedBy();
 }
 
 void RunChecks::checkEnergy(const Simulation& sim, long long step) {
@@ -322,9 +385,9 @@ void RunChecks::collect(RunResult& r) const {
 }
 
 RunResult runSimulation(Simulation& sim, long long steps, long long every,
-                        const std::function<void(const ReportRow&)>& on_row) {
+                        const std::function<void(const ReportRow&)>& on_row, bool strict) {
     RunResult result;
-    RunChecks checks(sim);
+    RunChecks checks(sim, strict);
     const auto t0 = std::chrono::steady_clock::now();
     auto record = [&] {
         ReportRow row{result.steps, sim.state().t, result.wall, sim.metrics()};

@@ -13,6 +13,37 @@ void Simulation::initMeasures() {
     strainRest_.clear();
     for (const auto& e : strainEdges_) strainRest_.push_back((state().x.col(e[1]) - state().x.col(e[0])).norm());
     initialEnergy_ = energy();
+    pinned_.clear();
+    for (int i = 0; i < state().size(); ++i)
+        if (state().w[i] == 0.0) pinned_.push_back(i);
+}
+
+void Simulation::checkMomentum(const Matrix3X& before, const Matrix3X& p, int pass) {
+    if (!momentumBy_.empty() || !pinned_.empty()) return;
+    const VectorX& w = state().w;
+    Vec3 created = Vec3::Zero();
+    double moved = 0.0, size = 0.0;
+    for (int i = 0; i < p.cols(); ++i) {
+        if (w[i] == 0.0) return;  // pinned since (the app's drag): an infinite mass, no check
+        const Vec3 dp = p.col(i) - before.col(i);
+        created += dp / w[i];
+        moved += dp.norm() / w[i];
+        size += p.col(i).norm() / w[i];
+    }
+    if (created.norm() > 1e-6 * moved && created.norm() > 1e-12 * size) {
+        momentumBy_ = timer_.passes()[static_cast<size_t>(pass)].name;
+        momentumCreated_ = created.norm() / moved;
+    }
+}
+
+void Simulation::checkPins(const Matrix3X& p, int pass) {
+    if (!pinMovedBy_.empty()) return;
+    const State& s = state();
+    for (int i : pinned_)  // (still pinned: the app may release a pin)
+        if (s.w[i] == 0.0 && (p.col(i) - s.x.col(i)).squaredNorm() > 0.0) {
+            pinMovedBy_ = timer_.passes()[static_cast<size_t>(pass)].name;
+            return;
+        }
 }
 
 double Simulation::energy() const {

@@ -32,7 +32,7 @@ clothlab_mistake(separation_equal_shares FILE self_collision.cpp
   FIND "return {wi / wsum * push * n, -wj / wsum * push * n};" REPLACE "return {0.5 * push * n, -0.5 * push * n};"
   WHY "moves both particles by half, whatever their masses: momentum is not kept and pinned particles move")
 clothlab_mistake(separation_nan_when_coincident FILE self_collision.cpp
-  FIND "return len > 0.0 ? Vec3(diff / len) : Vec3(0, 1, 0);" REPLACE "return Vec3(diff / len);"
+  FIND "return len >= 1e-12 ? Vec3(diff / len) : Vec3(0, 1, 0);" REPLACE "return Vec3(diff / len);"
   WHY "divides by the distance of two coincident particles: NaN spreads through the cloth")
 clothlab_mistake(friction_always_sticks FILE self_collision.cpp
   FIND "if (slip >= mu * depth) rt *= mu * depth / slip;" REPLACE ""

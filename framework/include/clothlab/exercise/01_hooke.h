@@ -21,7 +21,8 @@ namespace clothlab {
 ///   away when compressed, and vanishes at the rest length (Ruhelänge);
 /// - its magnitude is linear in the deformation \f$ \Delta l = \|\vec p_1-\vec p_0\| - l_0 \f$;
 /// - the force on p0 is the opposite (Newton's third law).
-/// If p0 and p1 coincide the direction is undefined: return the zero vector (never NaN).
+/// If p0 and p1 coincide (|p1 − p0| < 1e-12 m, degenerate: notation table) the direction is undefined:
+/// return the zero vector, never NaN.
 /// @param p0  first end point, m
 /// @param p1  second end point, m
 /// @param k   stiffness (Federhärte), N/m, k ≥ 0
@@ -38,7 +39,7 @@ Vec3 hookeForce(const Vec3& p0, const Vec3& p1, double k, double l0);
 /// - it opposes that component and is linear in it, with coefficient kd (a relative speed of 1 m/s
 ///   along the spring gives kd newtons);
 /// - so it never adds energy: the power it does on the pair is ≤ 0.
-/// Coincident points: zero vector (never NaN).
+/// Coincident points (|p1 − p0| < 1e-12 m, degenerate: notation table): the zero vector, never NaN.
 /// @param p0, p1  end points, m
 /// @param v0, v1  their velocities, m/s
 /// @param kd      damping coefficient, N s/m, kd ≥ 0

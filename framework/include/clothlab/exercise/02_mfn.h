@@ -43,7 +43,7 @@ std::vector<Spring> makeClothSprings(const Matrix3X& x, int nx, int ny, const Cl
 /// second end point. Requirements: each particle receives the force its springs exert on *it*
 /// (mind which end stage 01's functions return the force for); actio = reactio, so the spring forces
 /// of the whole cloth sum to zero; the total is minus the gradient of the sum of the spring energies;
-/// coincident particles give no NaN.
+/// coincident particles (|x_i − x_j| < 1e-12 m, degenerate: notation table) give no NaN.
 /// @param springs  the springs, e.g. from makeClothSprings()
 /// @param x        positions, 3 x N, m
 /// @param v        velocities, 3 x N, m/s

@@ -27,8 +27,8 @@ double distanceConstraint(const Vec3& p1, const Vec3& p2, double d);
 ///
 /// Requirements: it agrees with central finite differences of distanceConstraint() in p1; because C
 /// depends only on the difference p1 − p2, \f$ \nabla_{\vec p_2} C = -\nabla_{\vec p_1} C \f$ (you return
-/// the first one only). Coincident points (|p1 − p2| < 1e-12 m): the direction is undefined, return
-/// the zero vector (never NaN).
+/// the first one only). Coincident points (|p1 − p2| < 1e-12 m, degenerate: notation table): the direction is undefined,
+/// return the zero vector, never NaN.
 /// @param p1, p2  end points, m
 /// @return        \f$ \nabla_{\vec p_1} C \f$ (dimensionless), or zero for coincident points
 Vec3 distanceGradient(const Vec3& p1, const Vec3& p2);
@@ -42,7 +42,8 @@ Vec3 distanceGradient(const Vec3& p1, const Vec3& p2);
 /// - no momentum is created: \f$ m_1\Delta\vec p_1 + m_2\Delta\vec p_2 = 0 \f$ with m_i = 1/w_i,
 ///   so a pinned end (w = 0) does not move and the other one moves the whole way;
 /// - a satisfied constraint (C = 0) moves nothing.
-/// Both pinned (w1 + w2 = 0) or coincident points: zero corrections, never NaN.
+/// Both pinned (w1 + w2 = 0) or coincident points (|p1 − p2| < 1e-12 m, degenerate: notation table):
+/// zero corrections, never NaN.
 /// @param p1, p2  end points, m
 /// @param w1, w2  inverse masses, 1/kg (0: pinned)
 /// @param d       rest length, m

@@ -65,7 +65,7 @@ struct BendingStencil {
 /// paper are the negatives of these, \f$ -\partial d/\partial\vec p_i \f$ (the task sheet shows them and
 /// how the sign was found): do not copy them unchanged.
 /// Zero-area triangles (|p2 × p3| or |p2 × p4| below 1e-12 m², positions relative to p1) and coincident
-/// points: valid = false, d = −1, sinPhi = 0 and all q zero (never NaN). d is clamped to [−1, 1].
+/// points (degenerate: notation table): valid = false, d = −1, sinPhi = 0 and all q zero (never NaN). d is clamped to [−1, 1].
 /// @param p1, p2  the shared edge, m
 /// @param p3, p4  the opposite vertices, m
 /// @return        d, sinPhi, q1..q4, valid

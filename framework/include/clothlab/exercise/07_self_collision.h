@@ -85,8 +85,8 @@ std::vector<ParticlePair> findNeighbourPairs(const Matrix3X& p, const SpatialHas
 /// otherwise the pair is moved apart along the line through them, n = (p_i − p_j)/|p_i − p_j|, to
 /// exactly the distance d (C = 0 after one projection), each particle by a share proportional to its
 /// inverse mass, so that the momentum m_i Δp_i + m_j Δp_j is zero (a pinned particle does not move).
-/// Coincident particles (|p_i − p_j| = 0, or so small that its square is 0 in double precision): the
-/// direction is n = (0, 1, 0); never NaN.
+/// Coincident particles (|p_i − p_j| < 1e-12 m, degenerate: notation table): the direction is
+/// n = (0, 1, 0), never NaN (the one exception to the zero result: they must come apart).
 /// @param pi, pj  predicted positions, m
 /// @param wi, wj  inverse masses, 1/kg (0: pinned)
 /// @param d       separation distance, m, d ≥ 0
@@ -96,7 +96,7 @@ PairCorrection projectSeparation(const Vec3& pi, const Vec3& pj, double wi, doub
 /// Exercise 7.6 — friction between two cloth layers in contact, at position level (as static friction
 /// in exercise 6.3, now between two moving particles). The relative displacement over the step is
 /// r = (p_i − x_i) − (p_j − x_j); its tangential part r_t is r without its component along
-/// n = (p_i − p_j)/|p_i − p_j| (coincident: n = (0, 1, 0)). Requirements: with the penetration depth δ
+/// n = (p_i − p_j)/|p_i − p_j| (coincident, |p_i − p_j| < 1e-12 m: n = (0, 1, 0)). Requirements: with the penetration depth δ
 /// the separation removed (δ > 0) and the friction coefficient μ: if |r_t| < μ δ the layers stick,
 /// the correction removes r_t entirely; otherwise it removes a part of length μ δ (they slide, slower).
 /// The removal is shared like in exercise 7.5 (inverse-mass weighted, momentum zero); no normal

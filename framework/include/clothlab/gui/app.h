@@ -20,14 +20,14 @@
 
 namespace clothlab {
 
-/// How a stage's code was chosen at build time (compile definition CLOTHLAB_STAGE_CODE).
+/// How a stage's code was chosen at build time (stageCode(), core/stub_advice.h).
 struct StageInfo {
     std::string dir;   ///< stage folder, e.g. "01_hooke"
     bool reference;    ///< true: solutions/ (reference), false: exercises/ (student code)
 };
 
 /// The stages of this build and which code each uses, parsed from "01_hooke=reference;02_mfn=student".
-/// @param spec  the string (CLOTHLAB_STAGE_CODE)
+/// @param spec  the string (stageCode())
 std::vector<StageInfo> parseStageCode(const std::string& spec);
 
 /// Start-up settings of the app.
@@ -119,6 +119,9 @@ private:
     std::map<int, bool> user_pins_;      ///< pins toggled with the mouse (index -> pinned)
     std::deque<float> energy_, error_, step_ms_;  ///< plot histories
     std::string error_name_;             ///< which metric the error plot shows
+    std::string error_unit_;             ///< its unit
+    std::deque<double> sample_t_;        ///< simulated time of each plot sample, s
+    double plot_span_ = 0.0;             ///< simulated time the plots span, s
     double last_step_ms_ = 0.0;          ///< wall time of the last step, ms
     long long steps_ = 0;                ///< steps since the last reset
     std::unique_ptr<RunChecks> checks_;  ///< the run checks since the last reset or drag (run.h)

@@ -79,6 +79,10 @@ private:
     void findSelfCollisions(const Matrix3X& p);
     /// Line (10): one sweep over every constraint type the scene uses.
     void projectConstraints(Matrix3X& p);
+    /// One timed pass of projectConstraints(): project(p), then the invariants (checkPins; for
+    /// constraints between particles, `internal`, checkMomentum on the first iteration of a step).
+    template <class Project>
+    void constraintPass(int pass, bool internal, Matrix3X& p, Project project);
 
     PbdParticles P_;                         ///< the particles: x, v, w, t and the predictions p
     PbdCallbacks callbacks_;                 ///< what pbdStep() calls, built once from the scene
@@ -97,6 +101,8 @@ private:
     double kDistance_ = 1.0, kBending_ = 1.0;    ///< per-iteration PBD stiffness k'
     Matrix3X rest_;                              ///< rest positions X (self-collision: which pairs are neighbours)
     std::vector<DistanceLink> selfPairs_;        ///< self-collision pairs of the current step, d = h
+    bool firstIteration_ = false;                ///< the next projectConstraints() is a step's first
+    Matrix3X before_;                            ///< p before a pass (checkMomentum)
     int hashPass_ = -1, selfPass_ = -1;          ///< self-collision passes
     int gravityPass_ = -1, airPass_ = -1, windPass_ = -1, stepPass_ = -1, generatePass_ = -1;
     int distancePass_ = -1, bendingPass_ = -1, collisionPass_ = -1, velocityPass_ = -1;

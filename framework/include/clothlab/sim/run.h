@@ -25,12 +25,15 @@ enum class StopCause {
     PositionNotFinite,  ///< a position is NaN or infinite
     VelocityNotFinite,  ///< a velocity is NaN or infinite
     LeftRegion,         ///< a particle left the ball |x| < report.blowup (finite, but blown up)
-    SolverFailure       ///< the method could not take the step (SolverFailure, e.g. implicit Euler's solve)
+    SolverFailure,      ///< the method could not take the step (SolverFailure, e.g. implicit Euler's solve)
+    Strict              ///< with --strict (RunChecks strict): the first warning stops the run
 };
 
 /// What makes a finished run's numbers no result (RunChecks; `clothlab run --strict`: exit 3).
 /// In the order of severity, the order of RunResult::warnings.
 enum class WarningKind {
+    PinMoved,      ///< a pinned particle (w = 0, infinite mass) moved: some pass ignored its inverse mass
+    MomentumCreated,  ///< a pass of constraints between particles changed the linear momentum (no pins in the scene)
     FellThrough,   ///< a particle's path in one step reached kFellThroughFactor · h inside a collider
     NotConverged,  ///< RMS edge strain above kNotConvergedRmsStrain for a cloth meant to be inextensible
     Penetration,   ///< a particle more than (kPenetrationFactor − 1) h inside a collider at the end of a step
@@ -80,10 +83,13 @@ struct RunWarning {
     long long step = 0;      ///< the step where it started (1 = the first step)
     double t = 0.0;          ///< the simulated time at the end of that step, s
     int collider = -1;       ///< Penetration, FellThrough: index into scene.colliders
-    int particle = -1;       ///< Penetration, FellThrough: the first particle
-    int count = 0;           ///< Penetration, FellThrough: particles affected so far
+    int particle = -1;       ///< Penetration, FellThrough, PinMoved: the first particle
+    int count = 0;           ///< Penetration, FellThrough, PinMoved: particles affected so far
+    std::string pass;        ///< PinMoved: the pass that moved it (Simulation::pinMovedBy()), or "" when not known;
+                             ///< MomentumCreated: the pass (Simulation::momentumCreatedBy())
     double value = 0.0;      ///< NotConverged: RMS strain (1) at the end; Penetration: deepest h − d (m);
-                             ///< FellThrough: deepest −d on a path (m); EnergyGrowth: largest (E − E0)/E_scale
+                             ///< FellThrough: deepest −d on a path (m); EnergyGrowth: largest (E − E0)/E_scale;
+                             ///< PinMoved: how far the first particle moved (m); MomentumCreated: Simulation::momentumCreated() (1)
     double extra = 0.0;      ///< NotConverged: the max strain (1) at the end; else 0
 };
 
@@ -178,11 +184,13 @@ struct RunResult {
 class RunChecks {
 public:
     /// Takes the reference values from the simulation's current state: E(0), E_scale, which
-    /// particles start outside which collider.
-    /// @param sim  the simulation, before its first step
-    explicit RunChecks(const Simulation& sim);
+    /// particles start outside which collider, where the pinned particles (w = 0) are.
+    /// @param sim     the simulation, before its first step
+    /// @param strict  the first warning stops the run (StopCause::Strict; `clothlab run --strict`)
+    explicit RunChecks(const Simulation& sim, bool strict = false);
 
-    /// One step of `sim` with every check: "" or the stop message of stepAndCheck().
+    /// One step of `sim` with every check: "" or the stop message of stepAndCheck() (with strict:
+    /// or "stopped at step N (t = T s) by --strict: <the warning>").
     /// @param sim   the simulation given to the constructor
     /// @param step  the number of this step (1 for the first)
     std::string step(Simulation& sim, long long step);
@@ -209,6 +217,7 @@ private:
     void checkColliders(const Simulation& sim, long long step);
     void checkStrain(const Simulation& sim, long long step);
     void checkEnergy(const Simulation& sim, long long step);
+    void checkPins(const Simulation& sim, long long step);
     void judgeEnergy(double later, double before);
 
     Matrix3X xOld_;                        ///< positions before the step, m
@@ -231,6 +240,9 @@ private:
     double strainSinceT_ = 0.0;            ///< its time, s
     double worstPenetration_ = 0.0;
     long long worstPenetrationStep_ = 0;
+    std::vector<int> pins_;                ///< the pinned particles (w = 0) at the start
+    Matrix3X pinAt_;                       ///< their positions then, m (3 x pins)
+    bool strict_ = false;
 };
 
 /// Steps `steps` times (or until the state turns NaN/Inf, leaves the ball of radius
@@ -239,7 +251,8 @@ private:
 /// @param steps   number of steps
 /// @param every   report interval in steps (≥ 1)
 /// @param on_row  called with each row as it is recorded (progress output); may be empty
+/// @param strict  the first warning stops the run (RunChecks)
 RunResult runSimulation(Simulation& sim, long long steps, long long every,
-                        const std::function<void(const ReportRow&)>& on_row = {});
+                        const std::function<void(const ReportRow&)>& on_row = {}, bool strict = false);
 
 }  // namespace clothlab

@@ -60,6 +60,13 @@ public:
     const PassTimer& timer() const { return timer_; }
     /// The scene this simulation was built from.
     const Scene& scene() const { return scene_; }
+    /// The pass that first moved a pinned particle (w = 0) inside a step, e.g. "constraints: distance";
+    /// "" when none did or the method does not check its passes (RunChecks then names the whole step).
+    const std::string& pinMovedBy() const { return pinMovedBy_; }
+    /// The pass that first created linear momentum beyond round-off (checkMomentum()), "" when none did.
+    const std::string& momentumCreatedBy() const { return momentumBy_; }
+    /// What it created: \f$ |\sum_i m_i \Delta\vec p_i| / \sum_i m_i |\Delta\vec p_i| \f$ over that pass (1; 0 when none).
+    double momentumCreated() const { return momentumCreated_; }
     /// Edges to draw (springs or distance constraints), pairs of particle indices.
     const std::vector<Eigen::Vector2i>& edges() const { return edges_; }
     /// Triangles to draw (cloth surface), triples of particle indices; empty for springs and chains.
@@ -69,6 +76,22 @@ protected:
     /// Call at the end of a subclass constructor, once state(), edges_ and triangles_ are set:
     /// takes the rest lengths of the strain edges and the initial energy from the initial state.
     void initMeasures();
+    /// After pass `pass` (a timer_ id) changed the predicted positions p (3 x N, m): a pinned particle
+    /// (w_i = 0) keeps \f$ p_i = x_i \f$; the first pass that breaks this is remembered (pinMovedBy()).
+    /// @param p     the predicted positions after the pass, m
+    /// @param pass  the pass, as timer_.add() returned it
+    void checkPins(const Matrix3X& p, int pass);
+    /// After pass `pass` of constraints between particles (no collider) moved the predicted positions
+    /// from `before` to `p`, in a scene without pinned particles: the pass keeps the linear momentum,
+    /// \f$ |\sum_i m_i (\vec p_i - \vec p_i^{before})| \le 10^{-6} \sum_i m_i |\vec p_i - \vec p_i^{before}| \f$
+    /// (and above round-off, \f$ 10^{-12} \sum_i m_i |\vec p_i| \f$); the first pass that breaks this is
+    /// remembered (momentumCreatedBy()). With pins the check is off (a pin is an infinite mass).
+    /// @param before  the predicted positions before the pass, m
+    /// @param p       after it, m
+    /// @param pass    the pass, as timer_.add() returned it
+    void checkMomentum(const Matrix3X& before, const Matrix3X& p, int pass);
+    /// The scene has pinned particles (w = 0): checkMomentum() does nothing then.
+    bool hasPins() const { return !pinned_.empty(); }
     /// Elastic energy of the method's springs (0 for position-based methods), J.
     virtual double elasticEnergy() const { return 0.0; }
     /// Appends the method's own metrics after the common ones.
@@ -83,6 +106,10 @@ private:
     std::vector<Eigen::Vector2i> strainEdges_;  ///< edges whose strain is reported
     std::vector<double> strainRest_;            ///< their rest lengths, m
     double initialEnergy_ = 0.0;                ///< energy at t = 0, J
+    std::vector<int> pinned_;                   ///< the particles with w = 0
+    std::string pinMovedBy_;                    ///< see pinMovedBy()
+    std::string momentumBy_;                    ///< see momentumCreatedBy()
+    double momentumCreated_ = 0.0;              ///< see momentumCreated()
 };
 
 /// Builds the simulation for a scene's model and solver.method.
