@@ -45,11 +45,11 @@ while IFS=$'\t' read -r name stage what expect; do
 done <"$hostile/attacks.tsv"
 ((n > 0)) || fail "no attack matches '$only'"
 
-# --timeout 5 (CPU seconds per process; the wall clock 15 s): the reference's slowest graded test
+# --timeout 8 (CPU seconds per process; the wall clock 24 s): the reference's slowest graded test
 # (Experiments.CurtainStrainAtStiffness0_9, two curtain runs through the submission's process) needs
 # between 2 and 4 s; the attacks that spin or sleep end sooner than with the default 30 s.
 if [[ $mode == full ]]; then
-  "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --timeout 5 "${grade_only[@]}" >"$tmp/grade.log" 2>&1 \
+  "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --timeout 8 "${grade_only[@]}" >"$tmp/grade.log" 2>&1 \
     || { tail -20 "$tmp/grade.log"; fail "the class grading run failed"; }
   book=$tmp/out/gradebook.csv
 else  # one run per attacked stage, that stage only; the gradebooks joined (other stages read 0 there)
@@ -58,7 +58,7 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
     mkdir -p "$tmp/class_$s"
     mv "$tmp/class/reference" "$tmp/class_$s/reference"
     for st in "${!stage_of[@]}"; do [[ ${stage_of[$st]} == "$s" ]] && mv "$tmp/class/$st" "$tmp/class_$s/"; done
-    "$grader" --kit "$kit" --class "$tmp/class_$s" --out "$tmp/out_$s" --only "$s" --timeout 5 >"$tmp/grade_$s.log" 2>&1 \
+    "$grader" --kit "$kit" --class "$tmp/class_$s" --out "$tmp/out_$s" --only "$s" --timeout 8 >"$tmp/grade_$s.log" 2>&1 \
       || { tail -20 "$tmp/grade_$s.log"; fail "the class grading run for stage $s failed"; }
     mv "$tmp/class_$s/reference" "$tmp/class/reference"
     [[ -f $book ]] || head -1 "$tmp/out_$s/gradebook.csv" >"$book"
