@@ -70,7 +70,15 @@ function(clothlab_add_sanitize_tests)
     add_test(NAME sanitize.fuzz_replay COMMAND scene_fuzz_replay "${PROJECT_SOURCE_DIR}/scenes"
              "${PROJECT_SOURCE_DIR}/tests/fuzz/seeds" "${PROJECT_SOURCE_DIR}/tests/fuzz/regressions")
     set_tests_properties(sanitize.cli_bad_input sanitize.fuzz_replay PROPERTIES LABELS sanitize ENVIRONMENT "${_env}")
-    set_tests_properties(sanitize.cli_bad_input PROPERTIES COST 40)  # long: started early (tests/CMakeLists.txt)
+    # The sanitized command line on every bad input is label heavy too (./lab test --heavy builds it;
+    # 75 CPU s to compile, 70 s to run); ./lab test keeps the sanitized loader (fuzz_replay: the seeds,
+    # every scene and every fuzzer finding), and ./lab test --sanitize runs everything sanitized.
+    set_tests_properties(sanitize.cli_bad_input PROPERTIES LABELS "sanitize;heavy")
+    set_target_properties(clothlab-sanitized PROPERTIES EXCLUDE_FROM_ALL TRUE)
+    if(NOT TARGET clothlab_heavy_builds)
+      add_custom_target(clothlab_heavy_builds)
+    endif()
+    add_dependencies(clothlab_heavy_builds clothlab-sanitized)
     return()
   endif()
   if(NOT CLOTHLAB_SANITIZE)

@@ -170,11 +170,11 @@ inline std::string answersPath(const char* stageDir) {
     return std::string(CLOTHLAB_ANSWERS_DEFAULT_DIR) + "/" + stageDir + "/answers.json";
 }
 
-/// The answers file as the student knows it, for messages: exercises/<stageDir>/answers.json when the
-/// grader copied it into its sandbox (CLOTHLAB_ANSWERS_DIR), else answersPath().
+/// The answers file as the student knows it, for messages: $CLOTHLAB_ANSWERS_SHOWN_AS when set (the
+/// grader sets exercises/<stageDir>/answers.json beside its sandbox's copy), else answersPath().
 /// @param stageDir  the stage's folder name, e.g. "01_hooke"
 inline std::string answersShownAs(const char* stageDir) {
-    if (const char* dir = std::getenv("CLOTHLAB_ANSWERS_DIR"); dir && *dir) return std::string("exercises/") + stageDir + "/answers.json";
+    if (const char* shown = std::getenv("CLOTHLAB_ANSWERS_SHOWN_AS"); shown && *shown) return shown;
     return answersPath(stageDir);
 }
 

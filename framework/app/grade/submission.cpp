@@ -306,8 +306,8 @@ std::vector<int> usableCpus() {
 /// One test in its own sandboxed process; the verdict comes from the channel (see graded_main.cpp).
 /// With a `server` (the submission process's program) the test process starts it for the
 /// submission's code; test and submission process share one CPU (`cpu`, or any when < 0).
-TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& name,
-                   int timeout_s, int cpu, const fs::path& log) {
+TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& shown,
+                   const std::string& name, int timeout_s, int cpu, const fs::path& log) {
     TestResult r;
     r.name = name;
     SandboxRun run;
@@ -320,7 +320,8 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     // The graded experiments read the student's answers.json from here (tests/test_util.h answersPath).
     // One solver thread (OMP_NUM_THREADS, read by the solver's default team size, sim/team.h): the test
     // and the submission's process share one CPU, where a second thread can only wait for the first.
-    run.env = {{"CLOTHLAB_ANSWERS_DIR", "/grade/answers"}, {"OMP_NUM_THREADS", "1"}};
+    // Its messages name the file as the student knows it (CLOTHLAB_ANSWERS_SHOWN_AS), not the sandbox's path.
+    run.env = {{"CLOTHLAB_ANSWERS_DIR", "/grade/answers"}, {"CLOTHLAB_ANSWERS_SHOWN_AS", shown}, {"OMP_NUM_THREADS", "1"}};
     if (!answers.empty()) run.mounts.push_back({answers, "/grade/answers", false});
     // The limit is CPU time, per process (the test's and the submission's): a machine busy with other
     // work slows a test down, it does not fail it. The wall clock stops a program that waits forever.
@@ -381,6 +382,8 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
     StageResult s;
     s.stage = stage;
     s.title = points["title"];
+    const std::string file = fs::path(points["file"].get<std::string>()).filename().string();  // NN_name.points.json
+    const std::string shown = "exercises/" + file.substr(0, file.find('.')) + "/answers.json";
     std::vector<std::string> names;
     for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it) names.push_back(it.key());
     s.tests.resize(names.size());
@@ -394,7 +397,7 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
             r.message = "not run: two tests of this stage timed out already";
         } else {
             const int cpu = cpus.empty() ? -1 : cpus[static_cast<size_t>(worker) % cpus.size()];
-            r = runTest(exe, server, answers, names[i], timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
+            r = runTest(exe, server, answers, shown, names[i], timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
             if (r.message.rfind("timed out", 0) == 0) ++timeouts;
         }
         r.max_points = points["tests"][names[i]].get<double>();

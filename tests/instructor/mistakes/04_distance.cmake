@@ -8,7 +8,10 @@ clothlab_mistake(weights_swapped FILE distance.cpp
   WHY "heavy particles move more than light ones: momentum is created")
 clothlab_mistake(no_mass_weighting FILE distance.cpp
   FIND "const Vec3 s = (k * (len - d) / (wsum * len)) * e;" REPLACE "const Vec3 s = (k * (len - d) / (2.0 * len)) * e; (void)wsum;"
-  WHY "splits the correction half-half regardless of w (pinned particles move)")
+  WHY "divides by 2 instead of w1 + w2: light particles overshoot (the cloth explodes), heavy ones move too little")
+clothlab_mistake(weighting_left_out FILE distance.cpp
+  FIND "return {-w1 * s, w2 * s};" REPLACE "return {-0.5 * wsum * s, 0.5 * wsum * s};"
+  WHY "splits every correction half-half, whatever the inverse masses: pinned particles move")
 clothlab_mistake(missing_normalisation FILE distance.cpp
   FIND "const Vec3 s = (k * (len - d) / (wsum * len)) * e;" REPLACE "const Vec3 s = (k * (len - d) / wsum) * e;"
   WHY "uses p1 - p2 instead of the unit direction n")
