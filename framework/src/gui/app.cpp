@@ -60,11 +60,11 @@ void plot(const char* label, const std::deque<float>& q, const char* unit, doubl
     }
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
     char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "last %.4g %s", v.back(), unit);
-    ImGui::Text("%s   max %.4g %s", label, *hi, unit);
+    std::snprintf(overlay, sizeof overlay, "last %.4g", v.back());
+    ImGui::Text("%s%s%s%s   top %.4g", label, *unit ? " [" : "", unit, *unit ? "]" : "", *hi);
     ImGui::PlotLines((std::string("##") + label).c_str(), v.data(), static_cast<int>(v.size()), 0, overlay, *lo, *hi,
-                     ImVec2(-1, 56));
-    ImGui::TextDisabled("min %.4g %s   span %.3g %s   over t = %.3g .. %.3g s (%zu frames)", *lo, unit, *hi - *lo, unit, t0, t1, v.size());
+                     ImVec2(ImGui::GetContentRegionAvail().x, 56));
+    ImGui::TextDisabled("bottom %.4g  span %.3g  t %.3g-%.3g s", *lo, *hi - *lo, t0, t1);
 }
 
 // Stage number of "not implemented: exercise N.M name" (0 if none).
@@ -476,6 +476,7 @@ void App::panelScene() {
 void App::panelParameters() {
     bool changed = false;
     SolverSpec& sv = scene_.solver;
+    ImGui::PushItemWidth(140);  // room beside each slider for its value and unit
     changed |= sliderD("dt [s]", sv.dt, 1e-5, 0.05, "%.5f", true);
     const bool position_based = isPositionBased(sv.method);
     if (position_based) {
@@ -531,7 +532,7 @@ void App::panelParameters() {
         }
     }
     // Two quantities, two sliders: the air damping force (every method) and dampVelocities' k_damping (pbd, xpbd).
-    changed |= sliderD("air damping [N s/m]", scene_.forces.air_damping, 0, 5.0, "%.3f");
+    changed |= sliderD("air damping [Ns/m]", scene_.forces.air_damping, 0, 5.0, "%.3f");
     if (position_based) changed |= sliderD("k_damping [1]", scene_.pbd.damping, 0, 1.0, "%.3f");
     float wind[3] = {float(scene_.forces.wind.x()), float(scene_.forces.wind.y()), float(scene_.forces.wind.z())};
     ImGui::SliderFloat3("wind [m/s]", wind, -20, 20, "%.1f");
@@ -544,6 +545,7 @@ void App::panelParameters() {
         if (ImGui::Checkbox(label.c_str(), &on)) collider_on_[i] = on, changed = true;
         if (i + 1 < all_colliders_.size()) ImGui::SameLine();
     }
+    ImGui::PopItemWidth();
     if (changed) rebuild(true);
 }
 
