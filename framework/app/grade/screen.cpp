@@ -280,7 +280,10 @@ const std::set<std::string> kAllowedC = {
     "memset", "memcmp", "memchr", "strlen", "strcmp", "strncmp", "strchr", "strcpy", "strncpy", "printf", "puts",
     "putchar", "fputs", "fputc", "putc", "fprintf", "fwrite", "fflush", "vprintf", "vfprintf", "snprintf", "sprintf",
     "vsnprintf", "__printf_chk", "__fprintf_chk", "__sprintf_chk", "__snprintf_chk", "__vsnprintf_chk", "stdout",
-    "stderr", "rand", "srand", "qsort", "bsearch", "abs", "labs", "llabs", "strtod", "strtol", "atof", "atoi"};
+    "stderr", "rand", "srand", "qsort", "bsearch", "abs", "labs", "llabs", "strtod", "strtol", "atof", "atoi",
+    // <iostream> since GCC 13 (Debian 13): a reference to std::ios_base_library_init() in place of the
+    // static ios_base::Init object (the initialiser allowed below for GCC 12).
+    "_ZSt21ios_base_library_initv"};
 
 bool allowedMath(const std::string& s) {
     static const std::regex math(
