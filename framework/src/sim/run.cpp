@@ -227,6 +227,10 @@ RunChecks::RunChecks(const Simulation& sim, bool strict) : strict_(strict) {
     }
 }
 
+bool RunChecks::fired(WarningKind k) const {
+    return std::any_of(warnings_.begin(), warnings_.end(), [k](const RunWarning& w) { return w.kind == k; });
+}
+
 RunWarning& RunChecks::warn(WarningKind k, long long step, double t, int collider) {
     for (RunWarning& w : warnings_)
         if (w.kind == k && w.collider == collider) return w;
@@ -286,9 +290,7 @@ std::string RunChecks::step(Simulation& sim, long long step) {
     if (!stop.empty()) return stop;
     const size_t before = warnings_.size();
     if (!pins_.empty()) checkPins(sim, step);
-    if (!sim.momentumCreatedBy().empty() && std::none_of(warnings_.begin(), warnings_.end(), [](const RunWarning& w) {
-            return w.kind == WarningKind::MomentumCreated;
-        })) {
+    if (!sim.momentumCreatedBy().empty() && !fired(WarningKind::MomentumCreated)) {
         RunWarning& w = warn(WarningKind::MomentumCreated, step, sim.state().t);
         w.pass = sim.momentumCreatedBy(), w.value = sim.momentumCreated();
     }
@@ -304,8 +306,7 @@ std::string RunChecks::step(Simulation& sim, long long step) {
 }
 
 void RunChecks::checkPins(const Simulation& sim, long long step) {
-    for (const RunWarning& w : warnings_)
-        if (w.kind == WarningKind::PinMoved) return;  // reported once, at the step it happened
+    if (fired(WarningKind::PinMoved)) return;  // reported once, at the step it happened
     const State& s = sim.state();
     int moved = 0, first = -1;
     double distance = 0.0;
@@ -352,13 +353,12 @@ void RunChecks::judgeEnergy(double later, double before) {
 
 void RunChecks::finish(const Simulation& sim) {
     if (checkEnergy_ && gAbove_ > 0) {
-        bool grew = false;
-        for (const RunWarning& w : warnings_) grew = grew || w.kind == WarningKind::EnergyGrowth;
+        bool grew = fired(WarningKind::EnergyGrowth);
         // A run that ended between checkpoints: its last steps against the ones before them; one that
         // ended at a checkpoint before the first verdict: that checkpoint's windows.
         if (!grew && envWindow_ > -1e300) judgeEnergy(envWindow_, envBefore_);
         else if (!grew && nextCheckpoint_ / 2 < kEnergyFirstVerdict) judgeEnergy(lastWindow_, lastBefore_);
-        for (const RunWarning& w : warnings_) grew = grew || w.kind == WarningKind::EnergyGrowth;
+        grew = fired(WarningKind::EnergyGrowth);
         if (!grew) {
             const std::string order = method_ == "symplectic_euler" ? " (first order: halving solver.dt at least halves it)"
                                     : method_ == "velocity_verlet"  ? " (its error is second order in solver.dt)" : "";
@@ -368,8 +368,7 @@ void RunChecks::finish(const Simulation& sim) {
         }
     }
     if (strainSince_ == 0) return;
-    for (const RunWarning& w : warnings_)
-        if (w.kind == WarningKind::NotConverged) return;
+    if (fired(WarningKind::NotConverged)) return;
     const EdgeStrain e = sim.strain();
     RunWarning& w = warn(WarningKind::NotConverged, strainSince_, strainSinceT_);
     w.value = e.rms, w.extra = e.max;

@@ -214,6 +214,7 @@ public:
 
 private:
     RunWarning& warn(WarningKind k, long long step, double t, int collider = -1);
+    bool fired(WarningKind k) const;  ///< a warning of this kind fired already
     void checkColliders(const Simulation& sim, long long step);
     void checkStrain(const Simulation& sim, long long step);
     void checkEnergy(const Simulation& sim, long long step);
