@@ -1,4 +1,4 @@
-// `clothlab study stability|precision SCENE`: sweeps with CSV, PNG plots and a printed table.
+// `clothlab study stability|precision|sag SCENE` and `clothlab study extremes`: sweeps with CSV, PNG plots and a printed table.
 #include <unistd.h>
 
 #include <cmath>

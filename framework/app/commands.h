@@ -10,7 +10,7 @@ enum Exit { Ok = 0, BadInput = 1, NotImplementedYet = 2, Unstable = 3, Internal 
 /// `run SCENE [--set k=v]... [--steps N | --seconds T] [--dump FILE.csv] [--out DIR]`
 void addRunCommand(CLI::App& app, int& exit_code);
 
-/// `study stability|precision SCENE [options]`
+/// `study stability|precision|sag SCENE [options]` and `study extremes [options]`
 void addStudyCommand(CLI::App& app, int& exit_code);
 
 /// `hint N.M [--exercises DIR] [--shown]`: progressive hints, recorded in DIR/NN_name/hints_taken.json
