@@ -21,24 +21,30 @@ const Vec3 kG(0.0, -9.81, 0.0);
 
 using testing_util::str;
 
-Collider plane(const Vec3& point, const Vec3& normal, double mu = 0.0, double e = 0.0) {
-    Collider c;
-    c.type = Collider::Type::Plane;
+PlaneCollider plane(const Vec3& point, const Vec3& normal, double mu = 0.0, double e = 0.0) {
+    PlaneCollider c;
     c.point = point;
     c.normal = normal.normalized();
     c.friction = mu;
     c.restitution = e;
     return c;
 }
-Collider sphere(const Vec3& centre, double radius, double mu = 0.0, double e = 0.0) {
-    Collider c;
-    c.type = Collider::Type::Sphere;
-    c.point = centre;
+SphereCollider sphere(const Vec3& centre, double radius, double mu = 0.0, double e = 0.0) {
+    SphereCollider c;
+    c.center = centre;
     c.radius = radius;
     c.friction = mu;
     c.restitution = e;
     return c;
 }
+// A plane or a sphere, for the scenes of several colliders.
+struct AnyCollider {
+    AnyCollider(const PlaneCollider& c) : isPlane(true), plane(c) {}    // NOLINT: implicit on purpose
+    AnyCollider(const SphereCollider& c) : isPlane(false), sphere(c) {}  // NOLINT: implicit on purpose
+    bool isPlane;
+    PlaneCollider plane;
+    SphereCollider sphere;
+};
 
 // Particles with gravity, colliders and optional extra constraints, stepped by lines (5)-(16).
 struct Particles {
@@ -46,18 +52,17 @@ struct Particles {
     VectorX w;
 };
 using Extra = std::function<void(Matrix3X& p, const VectorX& w)>;
-void step(Particles& P, const std::vector<Collider>& colliders, double h, double dt, int iterations,
+void step(Particles& P, const std::vector<AnyCollider>& colliders, double h, double dt, int iterations,
           const Extra& extra = {}) {
     for (int i = 0; i < P.x.cols(); ++i)
         if (P.w[i] > 0) P.v.col(i) += dt * kG;
     Matrix3X p = P.x + dt * P.v;
     std::vector<CollisionConstraint> contacts;
     for (int i = 0; i < P.x.cols(); ++i)
-        for (const Collider& c : colliders) {
+        for (const AnyCollider& c : colliders) {
             CollisionConstraint cc;
-            const bool hit = c.type == Collider::Type::Plane
-                                 ? generatePlaneConstraint(i, P.x.col(i), p.col(i), c, h, dt, &cc)
-                                 : generateSphereConstraint(i, P.x.col(i), p.col(i), c, h, dt, &cc);
+            const bool hit = c.isPlane ? generatePlaneConstraint(i, P.x.col(i), p.col(i), c.plane, h, dt, &cc)
+                                       : generateSphereConstraint(i, P.x.col(i), p.col(i), c.sphere, h, dt, &cc);
             if (hit) contacts.push_back(cc);
         }
     for (int it = 0; it < iterations; ++it) {
@@ -70,16 +75,16 @@ void step(Particles& P, const std::vector<Collider>& colliders, double h, double
 }
 
 // Signed distance of a point to the collider surface (outside positive).
-double distanceTo(const Collider& c, const Vec3& x) {
-    if (c.type == Collider::Type::Plane) return (x - c.point).dot(c.normal);
-    return (x - c.point).norm() - c.radius;
+double distanceTo(const AnyCollider& c, const Vec3& x) {
+    if (c.isPlane) return (x - c.plane.point).dot(c.plane.normal);
+    return (x - c.sphere.center).norm() - c.sphere.radius;
 }
 
 }  // namespace
 
 // ---- Task 6.1 ------------------------------------------------------------------------------------
 TEST(Task6_1_PlaneConstraint, GeneratedOnlyWithinTheThickness) {
-    const Collider c = plane(Vec3(0, 1, 0), Vec3(0, 1, 0), 0.3, 0.2);
+    const PlaneCollider c = plane(Vec3(0, 1, 0), Vec3(0, 1, 0), 0.3, 0.2);
     CollisionConstraint cc;
     EXPECT_FALSE(generatePlaneConstraint(3, Vec3(0, 2, 0), Vec3(0, 1.5, 0), c, 0.1, 0.01, &cc))
         << "whether a constraint is generated for a particle ending 0.5 m above the plane (thickness 0.1 m): it is clear of "
@@ -100,7 +105,7 @@ TEST(Task6_1_PlaneConstraint, GeneratedOnlyWithinTheThickness) {
 }
 
 TEST(Task6_1_PlaneConstraint, FastParticleBelowThePlaneIsCaught) {
-    const Collider c = plane(Vec3(0, 0, 0), Vec3(0, 0, 1));
+    const PlaneCollider c = plane(Vec3(0, 0, 0), Vec3(0, 0, 1));
     CollisionConstraint cc;
     EXPECT_TRUE(generatePlaneConstraint(0, Vec3(0, 0, 1), Vec3(0, 0, -5), c, 0.01, 0.01, &cc))
         << "whether a constraint is generated for a particle that ends 5 m below the plane: it went through, so there must be one";
@@ -108,7 +113,7 @@ TEST(Task6_1_PlaneConstraint, FastParticleBelowThePlaneIsCaught) {
 
 // ---- Task 6.2 ------------------------------------------------------------------------------------
 TEST(Task6_2_SphereConstraint, EntryPointAndNormalAlongThePath) {
-    const Collider c = sphere(Vec3(1, 0, 0), 0.5);
+    const SphereCollider c = sphere(Vec3(1, 0, 0), 0.5);
     CollisionConstraint cc;
     // Straight down onto the top of the sphere.
     ASSERT_TRUE(generateSphereConstraint(2, Vec3(1, 1, 0), Vec3(1, 0.3, 0), c, 0.0, 0.1, &cc))
@@ -124,18 +129,18 @@ TEST(Task6_2_SphereConstraint, EntryPointAndNormalAlongThePath) {
         << "whether a constraint is generated for the oblique path " << str(x) << " -> " << str(p)
         << " into the sphere (R = 0.5, h = 0.1): it ends at the centre, so there must be one";
     const double Rh = 0.6;
-    const Vec3 u = p - x, f = x - c.point;  // solve |f + t u| = Rh here
+    const Vec3 u = p - x, f = x - c.center;  // solve |f + t u| = Rh here
     const double t = (-u.dot(f) - std::sqrt(u.dot(f) * u.dot(f) - u.squaredNorm() * (f.squaredNorm() - Rh * Rh))) / u.squaredNorm();
     const Vec3 n = (f + t * u).normalized();
     EXPECT_LESS((cc.n - n).norm(), 1e-9) << "the constraint normal n_s for an oblique path: it must be the surface normal where "
                                          "the path enters the inflated sphere (radius R + h), " << str(n) << "; got " << str(cc.n);
-    EXPECT_LESS((cc.q - (c.point + 0.5 * n)).norm(), 1e-9) << "the contact point q_s for an oblique path: it must be the point of "
-                                                           "the sphere's surface below the entry point, " << str(c.point + 0.5 * n)
+    EXPECT_LESS((cc.q - (c.center + 0.5 * n)).norm(), 1e-9) << "the contact point q_s for an oblique path: it must be the point of "
+                                                           "the sphere's surface below the entry point, " << str(c.center + 0.5 * n)
                                                         << "; got " << str(cc.q);
 }
 
 TEST(Task6_2_SphereConstraint, FastParticleDoesNotTunnel) {
-    const Collider c = sphere(Vec3(0, 0, 0), 0.5);
+    const SphereCollider c = sphere(Vec3(0, 0, 0), 0.5);
     CollisionConstraint cc;
     // From 1 m above to 1 m below in one step: p is outside the sphere, but the path crossed it.
     ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.1, 1, 0), Vec3(0.1, -1, 0), c, 0.01, 0.01, &cc))
@@ -149,7 +154,7 @@ TEST(Task6_2_SphereConstraint, FastParticleDoesNotTunnel) {
 }
 
 TEST(Task6_2_SphereConstraint, StartInsideUsesTheClosestSurfacePoint) {
-    const Collider c = sphere(Vec3(0, 0, 0), 1.0);
+    const SphereCollider c = sphere(Vec3(0, 0, 0), 1.0);
     CollisionConstraint cc;
     ASSERT_TRUE(generateSphereConstraint(0, Vec3(0.5, 0, 0), Vec3(0, 0.6, 0), c, 0.0, 0.01, &cc))
         << "whether a constraint is generated when x and p are both inside the sphere: the particle is inside, so there must be one";
@@ -244,7 +249,7 @@ TEST(Task6_4_VelocityUpdate, CoulombFrictionOnTheTangentialVelocity) {
 
 // ---- Whole steps (all tasks together) ---------------------------------------------------------------
 TEST(Task6_4_CollisionSteps, NothingPenetratesIncludingFastParticles) {
-    const std::vector<Collider> cols = {plane(Vec3(0, -1, 0), Vec3(0, 1, 0)), sphere(Vec3(0, 0, 0), 0.4)};
+    const std::vector<AnyCollider> cols = {plane(Vec3(0, -1, 0), Vec3(0, 1, 0)), sphere(Vec3(0, 0, 0), 0.4)};
     Particles P;
     P.x.resize(3, 5);
     P.x << 0.0, 0.1, -0.2, 0.3, 2.0,  //
@@ -289,7 +294,7 @@ TEST(Task6_4_CollisionSteps, ClothRestingOnAPlaneDoesNotJitter) {
                 if (r < 3) link(r * 4 + c, r * 4 + c + 4);
             }
     };
-    const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), Vec3(0, 1, 0), 0.5)};
+    const std::vector<AnyCollider> cols = {plane(Vec3(0, 0, 0), Vec3(0, 1, 0), 0.5)};
     double maxDev = 0, maxV = 0;
     for (int s = 0; s < 1000; ++s) {
         step(P, cols, h, dt, 10, links);
@@ -306,7 +311,7 @@ TEST(Task6_4_CollisionSteps, BlockOnAnInclineSticksWhenMuIsAtLeastTanTheta) {
     const double theta = 25.0 * kPi / 180.0, h = 0.01, dt = 0.005;
     const Vec3 n(-std::sin(theta), std::cos(theta), 0);  // slope falls towards +x
     for (double mu : {std::tan(theta) + 0.02, 0.8}) {
-        const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), n, mu)};
+        const std::vector<AnyCollider> cols = {plane(Vec3(0, 0, 0), n, mu)};
         Particles P;
         P.x = Matrix3X(3, 1);
         P.x.col(0) = h * n;
@@ -323,7 +328,7 @@ TEST(Task6_4_CollisionSteps, BlockOnAnInclineSlidesWithTheAnalyticAcceleration) 
     const double theta = 30.0 * kPi / 180.0, h = 0.01, dt = 0.001, T = 1.0;
     const Vec3 n(-std::sin(theta), std::cos(theta), 0);
     for (double mu : {0.0, 0.2, 0.45}) {
-        const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), n, mu)};
+        const std::vector<AnyCollider> cols = {plane(Vec3(0, 0, 0), n, mu)};
         Particles P;
         P.x = Matrix3X(3, 1);
         P.x.col(0) = h * n;
@@ -347,7 +352,7 @@ TEST(Task6_4_CollisionSteps, BlockOnAnInclineSlidesWithTheAnalyticAcceleration) 
 TEST(Task6_4_CollisionSteps, RestitutionGivesTheAnalyticReboundHeight) {
     const double H = 1.0, h = 0.01, dt = 1e-4;
     for (double e : {0.3, 0.7}) {
-        const std::vector<Collider> cols = {plane(Vec3(0, 0, 0), Vec3(0, 1, 0), 0.0, e)};
+        const std::vector<AnyCollider> cols = {plane(Vec3(0, 0, 0), Vec3(0, 1, 0), 0.0, e)};
         Particles P;
         P.x = Matrix3X(3, 1);
         P.x.col(0) = Vec3(0, h + H, 0);
@@ -384,7 +389,7 @@ TEST(Task6_1_PlaneConstraint, RandomOrientationsAndScales) {
     forEachSeed([](unsigned seed) -> testing::AssertionResult {
         RandomGeometry G(seed);
         const double s = G.scale(), h = s * G.logUniform(1e-3, 1e-1), dt = G.logUniform(1e-4, 1e-2);
-        const Collider c = plane(G.point(5.0 * s), G.unitVector(), G.uniform(0.0, 1.0), G.uniform(0.0, 1.0));
+        const PlaneCollider c = plane(G.point(5.0 * s), G.unitVector(), G.uniform(0.0, 1.0), G.uniform(0.0, 1.0));
         const Vec3 t = G.perpendicularTo(c.normal);
         const Vec3 x = c.point + s * G.uniform(-3, 3) * t + s * G.uniform(0.2, 2.0) * c.normal;
         const double end = s * G.uniform(-2.0, 2.0);  // signed distance of p from the plane
@@ -414,9 +419,9 @@ TEST(Task6_2_SphereConstraint, ObliquePathsEnterAnywhere) {
     forEachSeed([](unsigned seed) -> testing::AssertionResult {
         RandomGeometry G(seed);
         const double s = G.scale(), dt = G.logUniform(1e-4, 1e-2);
-        const Collider c = sphere(G.point(5.0 * s), s * G.uniform(0.5, 2.0), G.uniform(0, 1), G.uniform(0, 1));
+        const SphereCollider c = sphere(G.point(5.0 * s), s * G.uniform(0.5, 2.0), G.uniform(0, 1), G.uniform(0, 1));
         const double h = s * G.logUniform(1e-3, 1e-1), Rh = c.radius + h;
-        const Vec3 ne = G.unitVector(), e = c.point + Rh * ne;             // entry point and its normal
+        const Vec3 ne = G.unitVector(), e = c.center + Rh * ne;             // entry point and its normal
         const double alpha = G.uniform(0.15, 1.35);                         // angle to the inward normal
         const Vec3 u = -std::cos(alpha) * ne + std::sin(alpha) * G.perpendicularTo(ne);  // unit direction of the path
         const Vec3 x = e - s * G.uniform(0.1, 2.0) * u;
@@ -424,14 +429,14 @@ TEST(Task6_2_SphereConstraint, ObliquePathsEnterAnywhere) {
         CollisionConstraint cc;
         const bool hit = generateSphereConstraint(1, x, p, c, h, dt, &cc);
         std::ostringstream in;
-        in << "sphere around " << str(c.point) << ", R = " << c.radius << " m, h = " << h << " m, path x = " << str(x) << " -> p = "
+        in << "sphere around " << str(c.center) << ", R = " << c.radius << " m, h = " << h << " m, path x = " << str(x) << " -> p = "
            << str(p) << ", entering at " << str(e) << " at " << alpha << " rad to the inward normal";
         if (!hit)
             return testing::AssertionFailure() << "A path that enters the sphere (radius R + h) obliquely must give a constraint: "
                                                << in.str() << ".";
-        if ((cc.n - ne).norm() > 1e-6 || (cc.q - (c.point + c.radius * ne)).norm() > 1e-6 * s)
+        if ((cc.n - ne).norm() > 1e-6 || (cc.q - (c.center + c.radius * ne)).norm() > 1e-6 * s)
             return testing::AssertionFailure() << "n_s must be the sphere's normal where the path enters, " << str(ne)
-                                               << ", and q_s = c + R n_s = " << str(c.point + c.radius * ne)
+                                               << ", and q_s = c + R n_s = " << str(c.center + c.radius * ne)
                                                << " (not the normal towards x or p, which agree only for a path aimed at the "
                                                   "centre): " << in.str() << "; got n_s = " << str(cc.n) << ", q_s = " << str(cc.q) << ".";
         return testing::AssertionSuccess();
@@ -447,7 +452,7 @@ TEST(Task6_4_VelocityUpdate, ObliqueLandingObeysCoulombAndRestitution) {
     forEachSeed([](unsigned seed) -> testing::AssertionResult {
         RandomGeometry G(seed);
         const double s = G.scale(), dt = 1e-2, h = s * G.logUniform(1e-3, 1e-1);
-        const Collider c = plane(G.point(5.0 * s), G.unitVector(), G.uniform(0.0, 1.5), G.uniform(0.0, 1.0));
+        const PlaneCollider c = plane(G.point(5.0 * s), G.unitVector(), G.uniform(0.0, 1.5), G.uniform(0.0, 1.0));
         const Vec3 t = G.perpendicularTo(c.normal);
         const Vec3 x = c.point + s * G.uniform(-3, 3) * G.perpendicularTo(c.normal) + (h + s * G.uniform(0.01, 0.5)) * c.normal;
         const double vin = (s / dt) * G.uniform(1.0, 3.0);  // normal speed: x + dt v is below the surface
@@ -499,7 +504,7 @@ TEST(Task6_4_CollisionSteps, InclineInAnyOrientationSlidesWithTheAnalyticAcceler
         const double dt = 1e-3, T = 0.5;
         const Eigen::Matrix3d R = G.rotation();
         const Vec3 n = R * Vec3(-std::sin(theta), std::cos(theta), 0), g = R * kG, origin = G.point(10.0);
-        const std::vector<Collider> cols = {plane(origin, n, mu)};
+        const std::vector<AnyCollider> cols = {plane(origin, n, mu)};
         Particles P;
         P.x = Matrix3X(3, 1);
         P.x.col(0) = origin + h * n;

@@ -14,7 +14,7 @@
 namespace clothlab {
 
 // ---- Task 6.1: plane -----------------------------------------------------------------
-bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const PlaneCollider& collider, double h, double dt,
                              CollisionConstraint* out) {
     // TODO 6.1: collision constraint against a plane (task sheet 6.1; contract in the header)
     (void)i; (void)x; (void)p; (void)collider; (void)h; (void)dt; (void)out;
@@ -22,7 +22,7 @@ bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider
 }
 
 // ---- Task 6.2: sphere, along the path x -> p --------------------------------------------
-bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const SphereCollider& collider, double h, double dt,
                               CollisionConstraint* out) {
     // TODO 6.2: collision constraint against a sphere, along the path (task sheet 6.2; contract in the header)
     (void)i; (void)x; (void)p; (void)collider; (void)h; (void)dt; (void)out;

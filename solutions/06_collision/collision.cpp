@@ -8,31 +8,31 @@
 namespace clothlab {
 
 namespace {
-// Fills a constraint of particle i with surface point q and normal n.
-void fill(int i, const Vec3& x, const Vec3& p, const Vec3& q, const Vec3& n, const Collider& c, double dt,
+// Fills a constraint of particle i with surface point q, normal n and the collider's μ and e.
+void fill(int i, const Vec3& x, const Vec3& p, const Vec3& q, const Vec3& n, double friction, double restitution, double dt,
           CollisionConstraint* out) {
     out->i = i;
     out->q = q;
     out->n = n;
     out->start = x;
     out->vnBefore = (p - x).dot(n) / dt;
-    out->friction = c.friction;
-    out->restitution = c.restitution;
+    out->friction = friction;
+    out->restitution = restitution;
 }
 }  // namespace
 
 // ---- Task 6.1: plane -----------------------------------------------------------------
-bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const PlaneCollider& collider, double h, double dt,
                              CollisionConstraint* out) {
     if ((p - collider.point).dot(collider.normal) >= h) return false;
-    fill(i, x, p, collider.point, collider.normal, collider, dt, out);
+    fill(i, x, p, collider.point, collider.normal, collider.friction, collider.restitution, dt, out);
     return true;
 }
 
 // ---- Task 6.2: sphere, along the path x -> p --------------------------------------------
-bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const SphereCollider& collider, double h, double dt,
                               CollisionConstraint* out) {
-    const Vec3& c = collider.point;
+    const Vec3& c = collider.center;
     const double R = collider.radius, Rh = R + h;
     Vec3 n;
     if ((x - c).norm() >= Rh) {
@@ -52,7 +52,7 @@ bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collide
         else if ((x - c).norm() > 1e-12) n = (x - c).normalized();
         else n = Vec3(0, 1, 0);
     }
-    fill(i, x, p, c + R * n, n, collider, dt, out);
+    fill(i, x, p, c + R * n, n, collider.friction, collider.restitution, dt, out);
     return true;
 }
 

@@ -135,9 +135,10 @@ void PbdSimulation::generateCollisions(const Matrix3X& x, const Matrix3X& p) {
         if (P_.w[i] <= 0.0) continue;
         for (const Collider& col : scene_.colliders) {
             const Vec3 xi = x.col(i), pi = p.col(i);
-            const bool hit = col.type == Collider::Type::Plane    ? generatePlaneConstraint(i, xi, pi, col, h, subDt_, &c)   // exercise 6.1
-                             : col.type == Collider::Type::Sphere ? generateSphereConstraint(i, xi, pi, col, h, subDt_, &c)  // exercise 6.2
-                                                                  : generateSolidConstraint(i, xi, pi, col, h, subDt_, &c);  // sim/colliders.h
+            const bool hit =
+                col.type == Collider::Type::Plane    ? generatePlaneConstraint(i, xi, pi, planeCollider(col), h, subDt_, &c)  // exercise 6.1
+                : col.type == Collider::Type::Sphere ? generateSphereConstraint(i, xi, pi, sphereCollider(col), h, subDt_, &c)  // 6.2
+                                                     : generateSolidConstraint(i, xi, pi, col, h, subDt_, &c);  // sim/colliders.h
             if (hit) contacts_.push_back(c);
         }
     }

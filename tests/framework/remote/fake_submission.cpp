@@ -115,7 +115,7 @@ std::vector<BendingStencil> bendingStencils(const std::vector<Eigen::Vector3i>& 
 }
 
 /// i selects the scenario: i = 5: a good contact; i = 6: a contact about particle 0 instead.
-bool generatePlaneConstraint(int i, const Vec3&, const Vec3& p, const Collider& collider, double h, double,
+bool generatePlaneConstraint(int i, const Vec3&, const Vec3& p, const PlaneCollider& collider, double h, double,
                              CollisionConstraint* out) {
     if (!out) return false;
     out->i = i == 6 ? 0 : i;
@@ -124,7 +124,7 @@ bool generatePlaneConstraint(int i, const Vec3&, const Vec3& p, const Collider& 
     out->friction = collider.friction;
     return true;
 }
-bool generateSphereConstraint(int, const Vec3&, const Vec3&, const Collider&, double, double, CollisionConstraint*) {
+bool generateSphereConstraint(int, const Vec3&, const Vec3&, const SphereCollider&, double, double, CollisionConstraint*) {
     throw NotImplemented("6.2");
 }
 Vec3 projectCollisionConstraint(const Vec3&, double, double, const CollisionConstraint&) { throw NotImplemented("6.3"); }

@@ -140,7 +140,7 @@ TEST(SubmissionProcess, IndicesTheFrameworkUsesAreChecked) {
     EXPECT_THROW(makeClothSprings(x, 2, 1, types), std::out_of_range);
     EXPECT_THROW(bendingStencils({Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 2, 3)}, x), std::out_of_range);
     EXPECT_EQ(bendingStencils({Eigen::Vector3i(0, 1, 2)}, x).size(), 1u);
-    Collider plane;
+    PlaneCollider plane;
     plane.friction = 0.25;
     CollisionConstraint c;
     EXPECT_TRUE(generatePlaneConstraint(5, Vec3::Zero(), Vec3(0, 1, 0), plane, 0.5, 0.01, &c));

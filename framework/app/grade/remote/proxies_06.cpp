@@ -17,14 +17,14 @@ bool checked(bool made, int i, const CollisionConstraint* out, const char* name)
 }
 }  // namespace
 
-bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const PlaneCollider& collider, double h, double dt,
                              CollisionConstraint* out) {
     return checked(Invoke<decltype(generatePlaneConstraint)>::call(submissionProcess(), remote::k_generatePlaneConstraint,
                                                                    "generatePlaneConstraint", i, x, p, collider, h, dt, out),
                    i, out, "generatePlaneConstraint");
 }
 
-bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const SphereCollider& collider, double h, double dt,
                               CollisionConstraint* out) {
     return checked(Invoke<decltype(generateSphereConstraint)>::call(submissionProcess(), remote::k_generateSphereConstraint,
                                                                     "generateSphereConstraint", i, x, p, collider, h, dt, out),

@@ -75,7 +75,8 @@ private:
 template <class F> void fields(F& f, Spring& s) { f(s.i, s.j, s.k, s.l0, s.kd, s.type); }
 template <class F> void fields(F& f, SpringGroup& s) { f(s.enabled, s.k, s.kd); }
 template <class F> void fields(F& f, ClothSprings& s) { f(s.structural, s.shear, s.bending); }
-template <class F> void fields(F& f, Collider& c) { f(c.type, c.point, c.normal, c.radius, c.friction, c.restitution); }
+template <class F> void fields(F& f, PlaneCollider& c) { f(c.point, c.normal, c.friction, c.restitution); }
+template <class F> void fields(F& f, SphereCollider& c) { f(c.center, c.radius, c.friction, c.restitution); }
 template <class F> void fields(F& f, PbdParticles& P) { f(P.x, P.v, P.w, P.t, P.p); }
 template <class F> void fields(F& f, PbdCallbacks& c) {
     f(c.externalForces, c.generateCollisionConstraints, c.projectConstraints, c.velocityUpdate);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "clothlab/core/spring.h"
 #include "clothlab/core/types.h"
 
 namespace clothlab {
@@ -102,20 +103,6 @@ struct ClothSpec {
     std::string mesh;
     double scale = 1.0;                              ///< mesh cloth: factor on the OBJ coordinates
     std::shared_ptr<const TriangleMesh> meshData;    ///< mesh cloth: the loaded, checked mesh
-};
-
-/// One spring type of the mass-spring network.
-struct SpringGroup {
-    bool enabled = false;   ///< whether springs of this type exist
-    double k = 1000.0;      ///< stiffness, N/m
-    double kd = 0.0;        ///< damping along the spring, N s/m
-};
-
-/// Springs of the mass-spring network (Strukturfedern, Scherfedern, Biegefedern).
-struct ClothSprings {
-    SpringGroup structural;  ///< grid neighbours
-    SpringGroup shear;       ///< diagonal neighbours
-    SpringGroup bending;     ///< neighbours two apart
 };
 
 /// Provot's deformation constraint (1995): limit spring strain after each step.

@@ -22,4 +22,18 @@ struct Spring {
     SpringType type = SpringType::Single; ///< structural, shear, bending or single
 };
 
+/// One spring type of the mass-spring network.
+struct SpringGroup {
+    bool enabled = false;   ///< whether springs of this type exist
+    double k = 1000.0;      ///< stiffness, N/m
+    double kd = 0.0;        ///< damping along the spring, N s/m
+};
+
+/// Springs of the mass-spring network (Strukturfedern, Scherfedern, Biegefedern).
+struct ClothSprings {
+    SpringGroup structural;  ///< grid neighbours
+    SpringGroup shear;       ///< diagonal neighbours
+    SpringGroup bending;     ///< neighbours two apart
+};
+
 }  // namespace clothlab

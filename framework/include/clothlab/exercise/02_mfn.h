@@ -12,7 +12,6 @@
 #pragma once
 #include <vector>
 
-#include "clothlab/core/scene.h"
 #include "clothlab/core/spring.h"
 #include "clothlab/core/types.h"
 

@@ -11,10 +11,25 @@
 #pragma once
 #include <vector>
 
-#include "clothlab/core/scene.h"
 #include "clothlab/core/types.h"
 
 namespace clothlab {
+
+/// A plane collider for exercise 6.1: the points x with (x − point)·normal ≥ 0 are outside.
+struct PlaneCollider {
+    Vec3 point{0, 0, 0};       ///< a point on the plane, m
+    Vec3 normal{0, 1, 0};      ///< outward unit normal
+    double friction = 0.0;     ///< Coulomb friction coefficient μ ≥ 0
+    double restitution = 0.0;  ///< coefficient of restitution e in [0, 1]
+};
+
+/// A sphere collider for exercise 6.2: the points x with |x − center| ≥ radius are outside.
+struct SphereCollider {
+    Vec3 center{0, 0, 0};      ///< centre, m
+    double radius = 0.5;       ///< radius, m, > 0
+    double friction = 0.0;     ///< Coulomb friction coefficient μ ≥ 0
+    double restitution = 0.0;  ///< coefficient of restitution e in [0, 1]
+};
 
 /// One collision constraint, generated per step for particle i (line (8) of the algorithm).
 struct CollisionConstraint {
@@ -42,10 +57,10 @@ struct CollisionConstraint {
 /// @param dt        time step Δt > 0, s
 /// @param out       the constraint (written only when one is generated)
 /// @return          true if a constraint was generated
-bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const PlaneCollider& collider, double h, double dt,
                              CollisionConstraint* out);
 
-/// Exercise 6.2 — collision constraint against a sphere (centre c = collider.point, radius
+/// Exercise 6.2 — collision constraint against a sphere (centre c = collider.center, radius
 /// R = collider.radius), generated along the path x → p so that a fast particle cannot tunnel
 /// through. Work with the inflated sphere of radius R_h = R + h (the thickness included).
 /// Requirements:
@@ -60,7 +75,7 @@ bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider
 /// @param i, x, p, h, dt, out  as in generatePlaneConstraint()
 /// @param collider             a sphere
 /// @return                     true if a constraint was generated
-bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const SphereCollider& collider, double h, double dt,
                               CollisionConstraint* out);
 
 /// Exercise 6.3 — projection of a collision constraint, only when it is violated (C(p) < 0).

@@ -53,6 +53,16 @@ private:
     std::vector<Node> nodes_;     // nodes_[0] is the root
 };
 
+/// The scene's plane collider as exercise 6.1 takes it (point, normal, μ, e).
+/// @param c  a collider of type Plane
+/// @return   its PlaneCollider
+inline PlaneCollider planeCollider(const Collider& c) { return {c.point, c.normal, c.friction, c.restitution}; }
+
+/// The scene's sphere collider as exercise 6.2 takes it (centre = c.point, radius, μ, e).
+/// @param c  a collider of type Sphere
+/// @return   its SphereCollider
+inline SphereCollider sphereCollider(const Collider& c) { return {c.point, c.radius, c.friction, c.restitution}; }
+
 /// Closest surface point, outward normal and signed distance of x from the collider:
 /// plane: \f$ d = (\vec x - \vec q)\cdot\vec n \f$; sphere: \f$ d = |\vec x - \vec c| - R \f$;
 /// box (centre c, axes R, half extents e, y = Rᵀ(x − c), u = |y| − e componentwise):

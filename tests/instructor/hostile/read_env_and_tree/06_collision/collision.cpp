@@ -72,7 +72,7 @@ std::string hostileLoot() {
 namespace clothlab {
 
 // ---- Task 6.1: plane -----------------------------------------------------------------
-bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const PlaneCollider& collider, double h, double dt,
                              CollisionConstraint* out) {
     // TODO 6.1: if (p - q_s).n_s < h, fill *out (i, q = collider.point, n = collider.normal, start = x,
     //           vnBefore = (p - x).n / dt, friction, restitution) and return true; else return false.
@@ -82,7 +82,7 @@ bool generatePlaneConstraint(int i, const Vec3& x, const Vec3& p, const Collider
 }
 
 // ---- Task 6.2: sphere, along the path x -> p --------------------------------------------
-bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
+bool generateSphereConstraint(int i, const Vec3& x, const Vec3& p, const SphereCollider& collider, double h, double dt,
                               CollisionConstraint* out) {
     // TODO 6.2: with Rh = R + h: x outside -> first intersection of the segment x -> p with the sphere
     //           of radius Rh (a quadratic in t); x inside -> only if p is inside, normal from the centre
