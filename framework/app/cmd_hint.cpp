@@ -6,7 +6,6 @@
 // the grader reports it beside the points (what it means is the instructor's call).
 #include <fstream>
 #include <iostream>
-#include <regex>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -30,10 +29,11 @@ json readJson(const fs::path& file) {
 }
 
 void showHint(const std::string& task, const fs::path& exercises, bool peek) {
-    std::smatch m;
-    if (!std::regex_match(task, m, std::regex("([1-9])\\.([1-9][0-9]?)")))
-        throw InputError("command line", "hint " + task, "a task number looks like 4.2 (stage 4, task 2)");
-    const std::string nn = "0" + m[1].str();
+    const auto digit = [&](size_t i, char lo) { return i < task.size() && task[i] >= lo && task[i] <= '9'; };
+    const bool wellFormed =  // N.M: N in 1-9, M in 1-99
+        (task.size() == 3 || (task.size() == 4 && digit(3, '0'))) && digit(0, '1') && task[1] == '.' && digit(2, '1');
+    if (!wellFormed) throw InputError("command line", "hint " + task, "a task number looks like 4.2 (stage 4, task 2)");
+    const std::string nn = "0" + task.substr(0, 1);
     fs::path stage;
     if (fs::is_directory(exercises))
         for (const auto& e : fs::directory_iterator(exercises))

@@ -1,7 +1,8 @@
 #include "clothlab/core/stub_advice.h"
 
 #include <algorithm>
-#include <regex>
+#include <cctype>
+#include <utility>
 #include <sstream>
 #include <vector>
 
@@ -16,13 +17,26 @@ std::vector<std::string> stageList(const std::string& csv) {
     return out;
 }
 
+/// The first "exercise N.M" in `what` (N a digit 1-9, M digits) as {N, M}; {"", ""} if there is none.
+std::pair<std::string, std::string> exerciseNumber(const std::string& what) {
+    const std::string key = "exercise ";
+    for (size_t at = what.find(key); at != std::string::npos; at = what.find(key, at + 1)) {
+        const size_t n = at + key.size();
+        if (n + 2 >= what.size() || what[n] < '1' || what[n] > '9' || what[n + 1] != '.') continue;
+        size_t end = n + 2;
+        while (end < what.size() && std::isdigit(static_cast<unsigned char>(what[end]))) ++end;
+        if (end > n + 2) return {what.substr(n, 1), what.substr(n + 2, end - n - 2)};
+    }
+    return {"", ""};
+}
+
 }  // namespace
 
 std::string stubAdvice(const std::string& what, const std::string& have, const std::string& used) {
-    std::smatch m;
-    const bool numbered = std::regex_search(what, m, std::regex("exercise ([1-9])\\.([0-9]+)"));
-    const std::string task = numbered ? m[1].str() + "." + m[2].str() : "N.M";
-    const std::string stage = numbered ? "0" + m[1].str() : "NN";
+    const auto [n, m] = exerciseNumber(what);
+    const bool numbered = !n.empty();
+    const std::string task = numbered ? n + "." + m : "N.M";
+    const std::string stage = numbered ? "0" + n : "NN";
     const std::string finish = "finish task " + task + " in exercises/" + stage + "_*/ (./lab hint " + task +
                                " gives a hint, ./lab grade --stage " + stage + " says what is still missing)";
     const auto haveList = stageList(have);
