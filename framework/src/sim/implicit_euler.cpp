@@ -248,10 +248,7 @@ void ImplicitEulerSolver::buildPattern(const VectorX& w, const std::vector<Sprin
     used_ = solve_ != ImplicitSolve::Auto ? solve_ : unknowns > 1500 ? ImplicitSolve::BlockCg : ImplicitSolve::Cholesky;
     if (used_ == ImplicitSolve::BlockCg) buildBlocks(w, springs);
     dv_ = VectorX::Zero(unknowns);
-    cgJacobi_.setTolerance(1e-10);
-    cgIc_.setTolerance(kTolerance);
     if (used_ == ImplicitSolve::Cholesky) ldlt_.analyzePattern(A_);
-    if (used_ == ImplicitSolve::CgIncompleteCholesky) cgIc_.analyzePattern(A_);
 }
 
 bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force,
@@ -302,25 +299,12 @@ bool ImplicitEulerSolver::step(Matrix3X& x, Matrix3X& v, const VectorX& w, const
         if (a >= 0) b_.segment<3>(a) -= Kv;
     }
 
-    // (3) solve A Δv = b: sparse Cholesky (pattern analysed once) or, for large systems, CG
+    // (3) solve A Δv = b: sparse Cholesky, the pattern analysed once (large systems: stepBlockCg above)
     iterations_ = 0;
-    if (used_ == ImplicitSolve::Cholesky) {
-        ldlt_.factorize(A_);
-        if (ldlt_.info() != Eigen::Success) return false;
-        dv_ = ldlt_.solve(b_);
-        if (ldlt_.info() != Eigen::Success || !dv_.allFinite()) return false;
-    } else {
-        // Not converged within 2n iterations (extremely stiff): the finite iterate is used; should the
-        // motion then grow, runSimulation() reports it as unstable.
-        const auto solve = [&](auto& cg) {
-            cg.factorize(A_);
-            if (cg.preconditioner().info() != Eigen::Success) return false;
-            dv_ = cg.solveWithGuess(b_, dv_);
-            iterations_ = static_cast<int>(cg.iterations());
-            return (cg.info() == Eigen::Success || cg.info() == Eigen::NoConvergence) && dv_.allFinite();
-        };
-        if (!(used_ == ImplicitSolve::CgJacobi ? solve(cgJacobi_) : solve(cgIc_))) return false;
-    }
+    ldlt_.factorize(A_);
+    if (ldlt_.info() != Eigen::Success) return false;
+    dv_ = ldlt_.solve(b_);
+    if (ldlt_.info() != Eigen::Success || !dv_.allFinite()) return false;
     const double bNorm = b_.norm();
     residual_ = bNorm > 0.0 ? (b_ - A_ * dv_).norm() / bNorm : 0.0;
     const VectorX& dv = dv_;

@@ -24,14 +24,21 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
 
     // Only what the scene uses becomes a pass and a callback.
     const ForcesSpec& f = scene.forces;
-    if (f.gravity.squaredNorm() > 0.0) gravityPass_ = timer_.add("forces: gravity");
-    if (f.air_damping > 0.0) airPass_ = timer_.add("forces: air damping");
-    if (f.wind.squaredNorm() > 0.0) windPass_ = timer_.add("forces: wind");
-    if (gravityPass_ >= 0 || airPass_ >= 0 || windPass_ >= 0)
+    uses_.gravity = f.gravity.squaredNorm() > 0.0;
+    uses_.airDamping = f.air_damping > 0.0;
+    uses_.wind = f.wind.squaredNorm() > 0.0;
+    uses_.distance = scene.constraints.distance.enabled;
+    uses_.bending = scene.constraints.bending.enabled;
+    uses_.colliders = !scene.colliders.empty();
+    uses_.selfCollision = scene.self_collision.enabled;
+    if (uses_.gravity) pass_.gravity = timer_.add("forces: gravity");
+    if (uses_.airDamping) pass_.airDamping = timer_.add("forces: air damping");
+    if (uses_.wind) pass_.wind = timer_.add("forces: wind");
+    if (uses_.gravity || uses_.airDamping || uses_.wind)
         callbacks_.externalForces = [this](const Matrix3X& x, const Matrix3X& v, Matrix3X& f) { addExternalForces(x, v, f); };
-    stepPass_ = timer_.add(std::string(methodName(sv.method)) + ": damp, predict, update");
-    if (scene.constraints.distance.enabled) {
-        distancePass_ = timer_.add("constraints: distance");
+    pass_.step = timer_.add(std::string(methodName(sv.method)) + ": damp, predict, update");
+    if (uses_.distance) {
+        pass_.distance = timer_.add("constraints: distance");
         // One distance constraint along every mesh edge, in colour order (see colourOrder()).
         std::vector<Eigen::Vector4i> sets;
         for (const auto& e : edges_) sets.emplace_back(e[0], e[1], -1, -1);
@@ -46,8 +53,8 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         if (!xpbd_) kDistance_ = iterationStiffness(scene.constraints.distance.stiffness, sv.iterations);
         distanceSweep_ = makeDistanceSweep(sv.kernel, links_, linkPlan_);  // "exercise": exercise 4.3
     }
-    if (scene.constraints.bending.enabled) {
-        bendingPass_ = timer_.add("constraints: bending");
+    if (uses_.bending) {
+        pass_.bending = timer_.add("constraints: bending");
         const std::vector<BendingStencil> stencils = bendingStencils(triangles_, P_.x);
         std::vector<Eigen::Vector4i> sets;
         for (const auto& b : stencils) sets.emplace_back(b.i1, b.i2, b.i3, b.i4);
@@ -61,26 +68,26 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         if (!xpbd_) kBending_ = iterationStiffness(scene.constraints.bending.stiffness, sv.iterations);
         bendingSweep_ = makeBendingSweep(sv.kernel, stencils_, stencilPlan_);  // "exercise": exercise 5.2
     }
-    if (!scene.colliders.empty()) {
-        generatePass_ = timer_.add("collisions: generate");
-        collisionPass_ = timer_.add("constraints: collision");
-        velocityPass_ = timer_.add("collisions: velocity update");
+    if (uses_.colliders) {
+        pass_.generate = timer_.add("collisions: generate");
+        pass_.collision = timer_.add("constraints: collision");
+        pass_.velocity = timer_.add("collisions: velocity update");
         callbacks_.velocityUpdate = [this](const Matrix3X&, Matrix3X& v) {
-            auto timed = timer_.time(velocityPass_);
+            auto timed = timer_.time(pass_.velocity);
             velocityUpdate(v, contacts_);  // exercise 6.4
         };
     }
-    if (scene.self_collision.enabled) {  // stage 07: the cloth against itself
-        hashPass_ = timer_.add("self-collision: hash and pairs");
-        selfPass_ = timer_.add("constraints: self-collision");
+    if (uses_.selfCollision) {  // stage 07: the cloth against itself
+        pass_.hash = timer_.add("self-collision: hash and pairs");
+        pass_.self = timer_.add("constraints: self-collision");
         rest_ = P_.x;
     }
-    if (generatePass_ >= 0 || hashPass_ >= 0)
+    if (uses_.colliders || uses_.selfCollision)
         callbacks_.generateCollisionConstraints = [this](const Matrix3X& x, const Matrix3X& p) {
-            if (generatePass_ >= 0) generateCollisions(x, p);
-            if (hashPass_ >= 0) findSelfCollisions(p);
+            if (uses_.colliders) generateCollisions(x, p);
+            if (uses_.selfCollision) findSelfCollisions(p);
         };
-    if (distancePass_ >= 0 || bendingPass_ >= 0 || collisionPass_ >= 0 || selfPass_ >= 0)
+    if (uses_.distance || uses_.bending || uses_.colliders || uses_.selfCollision)
         callbacks_.projectConstraints = [this](Matrix3X& p) { projectConstraints(p); };
     initMeasures();
     movePins(P_, scene.cloth);  // pins given a position ("to") go there; the rest shape above stays
@@ -94,7 +101,7 @@ void PbdSimulation::step() {
     for (int s = 0; s < sv.substeps; ++s) {
         std::fill(linkLambda_.begin(), linkLambda_.end(), 0.0);  // XPBD: λ = 0 at the start of every (sub)step
         std::fill(bendLambda_.begin(), bendLambda_.end(), 0.0);
-        auto timed = timer_.time(stepPass_);  // the passes called back from pbdStep() are booked on their own
+        auto timed = timer_.time(pass_.step);  // the passes called back from pbdStep() are booked on their own
         firstIteration_ = true;
         pbdStep(P_, callbacks_, scene_.pbd.damping, sv.iterations, subDt_);  // lines (5)-(16), exercise 3.3
     }
@@ -103,17 +110,17 @@ void PbdSimulation::step() {
 
 void PbdSimulation::addExternalForces(const Matrix3X& x, const Matrix3X& v, Matrix3X& f) {
     const ForcesSpec& spec = scene_.forces;
-    if (gravityPass_ >= 0) {  // m_i g
-        auto timed = timer_.time(gravityPass_);
+    if (uses_.gravity) {  // m_i g
+        auto timed = timer_.time(pass_.gravity);
         for (int i = 0; i < f.cols(); ++i)
             if (P_.w[i] > 0.0) f.col(i) += spec.gravity / P_.w[i];
     }
-    if (airPass_ >= 0) {  // −c v_i
-        auto timed = timer_.time(airPass_);
+    if (uses_.airDamping) {  // −c v_i
+        auto timed = timer_.time(pass_.airDamping);
         f -= spec.air_damping * v;
     }
-    if (windPass_ >= 0) {  // per triangle: drag · A · ((v_wind − v̄)·n̂) n̂, split equally over its three particles
-        auto timed = timer_.time(windPass_);
+    if (uses_.wind) {  // per triangle: drag · A · ((v_wind − v̄)·n̂) n̂, split equally over its three particles
+        auto timed = timer_.time(pass_.wind);
         for (const auto& t : triangles_) {
             const Vec3 m = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
             const double twiceArea = m.norm();
@@ -127,7 +134,7 @@ void PbdSimulation::addExternalForces(const Matrix3X& x, const Matrix3X& v, Matr
 }
 
 void PbdSimulation::generateCollisions(const Matrix3X& x, const Matrix3X& p) {
-    auto timed = timer_.time(generatePass_);
+    auto timed = timer_.time(pass_.generate);
     contacts_.clear();
     const double h = scene_.solver.thickness;
     CollisionConstraint c;
@@ -145,7 +152,7 @@ void PbdSimulation::generateCollisions(const Matrix3X& x, const Matrix3X& p) {
 }
 
 void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
-    auto timed = timer_.time(hashPass_);
+    auto timed = timer_.time(pass_.hash);
     const double h = scene_.self_collision.thickness;
     const int tableSize = 2 * std::max(1, P_.size());
     selfPairs_.clear();
@@ -163,21 +170,21 @@ void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
 void PbdSimulation::projectConstraints(Matrix3X& p) {
     const VectorX& w = P_.w;
     const double dt2 = subDt_ * subDt_;
-    checkPins(p, stepPass_);  // lines (5)-(7) predicted p
-    if (distancePass_ >= 0)
-        constraintPass(distancePass_, true, p, [&](Matrix3X& q) {
+    checkPins(p, pass_.step);  // lines (5)-(7) predicted p
+    if (uses_.distance)
+        constraintPass(pass_.distance, true, p, [&](Matrix3X& q) {
             if (xpbd_) distanceSweep_.xpbd(w, scene_.constraints.distance.compliance / dt2, linkLambda_, q);
             else distanceSweep_.pbd(w, kDistance_, q);
         });
-    if (bendingPass_ >= 0)
-        constraintPass(bendingPass_, true, p, [&](Matrix3X& q) {
+    if (uses_.bending)
+        constraintPass(pass_.bending, true, p, [&](Matrix3X& q) {
             if (xpbd_) bendingSweep_.xpbd(w, scene_.constraints.bending.compliance / dt2, bendLambda_, q);
             else bendingSweep_.pbd(w, kBending_, q);
         });
-    if (collisionPass_ >= 0)
-        constraintPass(collisionPass_, false, p, [&](Matrix3X& q) { projectCollisionSweep(contacts_, w, scene_.solver.thickness, q, threads_); });
-    if (selfPass_ >= 0)
-        constraintPass(selfPass_, true, p, [&](Matrix3X& q) {
+    if (uses_.colliders)
+        constraintPass(pass_.collision, false, p, [&](Matrix3X& q) { projectCollisionSweep(contacts_, w, scene_.solver.thickness, q, threads_); });
+    if (uses_.selfCollision)
+        constraintPass(pass_.self, true, p, [&](Matrix3X& q) {
             projectSelfCollisionSweep(selfPairs_, P_.x, w, scene_.self_collision.friction, q);  // exercises 7.5, 7.6
         });
     firstIteration_ = false;
@@ -227,7 +234,7 @@ double PbdSimulation::minPairDistance() const {
 void PbdSimulation::addMetrics(std::vector<Metric>& m) const {
     if (!stencils_.empty()) m.push_back({"rms_bending_error", rmsBendingError(), "rad"});
     if (!scene_.colliders.empty()) m.push_back({"max_penetration", maxPenetration(), "m"});
-    if (selfPass_ >= 0) m.push_back({"min_pair_distance", minPairDistance(), "m"});
+    if (uses_.selfCollision) m.push_back({"min_pair_distance", minPairDistance(), "m"});
 }
 
 }  // namespace clothlab

@@ -13,7 +13,6 @@
 #include <array>
 #include <vector>
 
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -57,8 +56,6 @@ void addSpringJacobians(const std::vector<Spring>& springs, const Matrix3X& x, c
 enum class ImplicitSolve {
     Auto,                  ///< Cholesky up to 1500 unknowns, above BlockCg (the default)
     Cholesky,              ///< sparse LDLᵀ (Eigen::SimplicialLDLT), pattern analysed once, factorised every step
-    CgJacobi,              ///< conjugate gradients, diagonal preconditioner, relative residual 10⁻¹⁰ (the solver before issue 14)
-    CgIncompleteCholesky,  ///< conjugate gradients (Eigen), incomplete Cholesky preconditioner, relative residual 10⁻³
     /// Conjugate gradients on the 3x3 spring blocks without an assembled matrix: (A x)_i =
     /// (m_i + Δt c) x_i + Σ_s B_s (x_i − x_j) per particle, block-Jacobi preconditioner (the inverse
     /// 3x3 diagonal blocks), relative residual 10⁻³; particles in parallel (solver.threads), the
@@ -132,10 +129,6 @@ private:
     size_t pattern_springs_ = 0;               ///< number of springs the pattern was built for
     SparseMatrix A_;                           ///< the system matrix
     Eigen::SimplicialLDLT<SparseMatrix> ldlt_; ///< its factorisation (small systems)
-    /// Conjugate gradients with a diagonal preconditioner (ImplicitSolve::CgJacobi).
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cgJacobi_;
-    /// Conjugate gradients with an incomplete Cholesky preconditioner (large systems).
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cgIc_;
     ImplicitSolve solve_ = ImplicitSolve::Auto; ///< as chosen
     ImplicitSolve used_ = ImplicitSolve::Cholesky; ///< what Auto resolved to for this pattern
     VectorX dv_;                               ///< Δv of the last step (CG's initial guess)

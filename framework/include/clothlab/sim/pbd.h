@@ -103,9 +103,20 @@ private:
     std::vector<DistanceLink> selfPairs_;        ///< self-collision pairs of the current step, d = h
     bool firstIteration_ = false;                ///< the next projectConstraints() is a step's first
     Matrix3X before_;                            ///< p before a pass (checkMomentum)
-    int hashPass_ = -1, selfPass_ = -1;          ///< self-collision passes
-    int gravityPass_ = -1, airPass_ = -1, windPass_ = -1, stepPass_ = -1, generatePass_ = -1;
-    int distancePass_ = -1, bendingPass_ = -1, collisionPass_ = -1, velocityPass_ = -1;
+    /// What the scene uses; nothing else runs or is timed (a scene names only what it needs).
+    struct Uses {
+        bool gravity = false, airDamping = false, wind = false;  ///< external forces
+        bool distance = false, bending = false;                  ///< constraints between particles
+        bool colliders = false, selfCollision = false;           ///< collisions with colliders, with itself
+    } uses_;
+    /// The timer's pass ids (PassTimer::add) of the passes in use.
+    struct Passes {
+        int step = -1;                                  ///< lines (5)-(7) and (12)-(16): damp, predict, update
+        int gravity = -1, airDamping = -1, wind = -1;   ///< external forces, line (5)
+        int distance = -1, bending = -1;                ///< constraint sweeps, line (10)
+        int generate = -1, collision = -1, velocity = -1;  ///< colliders: line (8), line (10), line (16)
+        int hash = -1, self = -1;                       ///< self-collision: pairs (line (8)), sweep (line (10))
+    } pass_;
 };
 
 }  // namespace clothlab

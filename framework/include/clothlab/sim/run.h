@@ -209,8 +209,6 @@ public:
     const std::vector<std::string>& notes() const { return notes_; }
     /// Largest penetration max(0, h − d) over every step end, particle and collider so far, m.
     double worstPenetration() const { return worstPenetration_; }
-    /// The step at which worstPenetration() was reached (0: the initial state or none).
-    long long worstPenetrationStep() const { return worstPenetrationStep_; }
 
 private:
     RunWarning& warn(WarningKind k, long long step, double t, int collider = -1);
