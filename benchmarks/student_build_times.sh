@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The student's first impression (issue 29): in a fresh student copy, how long the first `./lab build`
+# The student's first impression: in a fresh student copy, how long the first `./lab build`
 # takes, then a change of --reference, then the first `./lab grade --stage 01` (which builds the grader).
 #   bash benchmarks/student_build_times.sh [BUILD_DIR] [COPY_DIR]     (defaults: build, a temp folder)
 # BUILD_DIR is the instructor's Release build whose reference objects the copy takes (./lab release

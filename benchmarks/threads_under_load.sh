@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 25: does the default thread count (solver.threads left at 0) ever lose against one thread?
+# Does the default thread count (solver.threads left at 0) ever lose against one thread?
 #   bash benchmarks/threads_under_load.sh [BUILD_DIR] [ROUNDS]     (defaults: build, 3)
 # Needs BUILD_DIR/bin/bench_pbd and BUILD_DIR/bin/clothlab (cmake --build BUILD_DIR --target bench_pbd clothlab).
 #
@@ -12,7 +12,7 @@
 # Rounds are interleaved (every load, every configuration, then the next round; the order of 1 thread
 # and default alternates), each figure the median over the rounds. Prints per kernel and load
 # speed = t(1 thread) / t(default) of the medians, and the median and lowest of the same ratio per round
-# (the 1-thread and default runs of one round saw the same background): above 1 the default is faster; issue 25's targets are >= 0.95 beside
+# (the 1-thread and default runs of one round saw the same background): above 1 the default is faster; the targets are >= 0.95 beside
 # each load and >= 1.8 alone on an idle 2-core machine. About 4 minutes on an idle 2-core machine
 # (3 rounds), longer under the loads; run it on an otherwise quiet machine.
 # "Default" means what a user gets: the script clears OMP_NUM_THREADS, OMP_WAIT_POLICY and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One convention for degenerate input (issue 29): the notation table of every stage's sheet carries the
+# One convention for degenerate input: the notation table of every stage's sheet carries the
 # same "degenerate" row (a length below 1e-12 m, an area |a × b| below 1e-12 m²); every contract (a doc
 # block of an exercise header) and every hint that speaks of coincident points or zero-area triangles
 # states that threshold; no text uses another one ("(nearly) zero", "its square is 0", "exactly zero").

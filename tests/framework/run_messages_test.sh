@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The run's messages (issue 29): a pinned particle that moves is reported at once, naming the pass
+# The run's messages: a pinned particle that moves is reported at once, naming the pass
 # and the stage that moved it, and with --strict the run stops there (exit 3); the reference moves no
 # pin; an unstable run and a strict stop each state their reason once.
 # A pass that creates momentum in a scene without pins is reported with its pass and stage too.

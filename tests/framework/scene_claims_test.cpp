@@ -199,7 +199,7 @@ const std::map<std::string, Claim>& claims() {
                                 v.require(r.start.w[0] == 0 && r.start.w[last] == 0 && std::abs(span - 2) < 1e-12 && std::abs(length - 3) < 1e-12,
                                           "both ends pinned, 2 m apart, a 3 m chain", "span " + num(span) + " m, length " + num(length) + " m");
                                 v.require(std::abs(s.chain.anchor.y() - s.chain.end->y()) < 1e-12, "the hooks at one height", "they differ");
-                                // the Done-means of issue 13: within 1 % of the span of the analytic catenary
+                                // within 1 % of the span of the analytic catenary
                                 const double before = catenaryError(s, r.start), after = catenaryError(s, r.end);
                                 v.require(before > 0.05, "it starts away from the catenary (a V)", "error at the start " + num(before));
                                 v.require(after < 0.01, "it settles into the catenary: every particle within 1 % of the span of it",
