@@ -1,5 +1,5 @@
 # Extensions: faster implementations that register themselves at the solver's extension point
-# (framework/include/clothlab/sim/extensions.h). The framework never names them; this file links
+# (framework/include/clothlab/sim/kernel_registry.h). The framework never names them; this file links
 # them into the programs. They are solved exercises, so they live in solutions/kernels/ and the
 # student copy (./lab release) has none: there, solver.kernel allows only "exercise".
 #

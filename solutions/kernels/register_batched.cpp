@@ -1,9 +1,9 @@
 // Registers the batched kernels as the solver's constraint kernel "batched" (solver.kernel:
-// "batched"; see framework/include/clothlab/sim/extensions.h): distance_batched.h for the distance
+// "batched"; see framework/include/clothlab/sim/kernel_registry.h): distance_batched.h for the distance
 // links, bending_batched.h for the bending stencils.
 // Linked into the programs by cmake/extensions.cmake, only where solutions/kernels/ exists.
 #include "bending_batched.h"
-#include "clothlab/sim/extensions.h"
+#include "clothlab/sim/kernel_registry.h"
 #include "distance_batched.h"
 
 namespace clothlab {
@@ -11,7 +11,7 @@ namespace {
 
 const bool registered = [] {
     SweepKernel kernel;
-    kernel.distance = [](const std::vector<DistanceLink>& links, const SweepPlan& plan) {  // sweepOver(): extensions.h
+    kernel.distance = [](const std::vector<DistanceLink>& links, const SweepPlan& plan) {  // sweepOver(): kernel_registry.h
         return sweepOver(distanceArrays(links, plan), projectDistanceArrays, projectDistanceArraysXpbd);
     };
     kernel.bending = [](const std::vector<BendingStencil>& stencils, const SweepPlan& plan) {

@@ -50,7 +50,7 @@ loader_keys() { grep -oE '\.(number|integer|boolean|choice|text|vec3|object|get|
 # registered at the extension point): the keys and the values it accepts.
 loader_words() {
   local src; src=$(dirname "$1")/../..
-  cat "$1" "$src/src/core/scene.cpp" "$src/../solutions/kernels/register_batched.cpp" "$src/src/sim/extensions.cpp" 2>/dev/null \
+  cat "$1" "$src/src/core/scene.cpp" "$src/../solutions/kernels/register_batched.cpp" "$src/src/sim/kernel_registry.cpp" 2>/dev/null \
     | grep -oE '"[a-z][a-z0-9_-]*"' | tr -d '"' | sort -u
 }
 # Every word inside a `code span` of a Markdown file.

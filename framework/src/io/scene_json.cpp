@@ -15,7 +15,7 @@
 #include "clothlab/core/input_error.h"
 #include "clothlab/core/mesh.h"
 #include "clothlab/sim/colliders.h"
-#include "clothlab/sim/extensions.h"
+#include "clothlab/sim/kernel_registry.h"
 
 namespace clothlab {
 namespace {

@@ -179,7 +179,7 @@ struct SolverSpec {
     int substeps = 1;       ///< PBD substeps per step
     double thickness = 0.01;///< collision thickness h, m
     /// PBD/XPBD constraint sweeps: "exercise" calls exercises 4.3 and 5.2 per constraint (the student's
-    /// or the reference code); any other name is a kernel registered with registerSweepKernel() (sim/extensions.h)
+    /// or the reference code); any other name is a kernel registered with registerSweepKernel() (sim/kernel_registry.h)
     std::string kernel = "exercise";
     int threads = 0;        ///< threads that sweep a colour group / compute forces (0: all cores, 1: serial)
 };

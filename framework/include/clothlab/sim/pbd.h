@@ -27,7 +27,7 @@
 #include "clothlab/exercise/05_bending.h"
 #include "clothlab/exercise/06_collision.h"
 #include "clothlab/exercise/07_self_collision.h"
-#include "clothlab/sim/extensions.h"
+#include "clothlab/sim/kernel_registry.h"
 #include "clothlab/sim/simulation.h"
 #include "clothlab/sim/sweeps.h"
 #include "clothlab/sim/team.h"
@@ -93,8 +93,8 @@ private:
     SweepPlan linkPlan_, stencilPlan_;       ///< colour groups of links_ and stencils_
     std::vector<DistanceLink> links_;        ///< distance constraints
     std::vector<BendingStencil> stencils_;   ///< bending constraints
-    ConstraintSweep distanceSweep_;          ///< PBD and XPBD distance sweeps over links_ (extensions.h)
-    ConstraintSweep bendingSweep_;           ///< PBD and XPBD bending sweeps over stencils_ (extensions.h)
+    ConstraintSweep distanceSweep_;          ///< PBD and XPBD distance sweeps over links_ (kernel_registry.h)
+    ConstraintSweep bendingSweep_;           ///< PBD and XPBD bending sweeps over stencils_ (kernel_registry.h)
     std::vector<double> linkLambda_;         ///< XPBD multipliers of the links
     std::vector<double> bendLambda_;         ///< XPBD multipliers of the stencils
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step

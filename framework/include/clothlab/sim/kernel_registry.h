@@ -1,4 +1,4 @@
-/// @file extensions.h
+/// @file kernel_registry.h
 /// @brief The one place where faster code plugs into the solver: registered constraint kernels.
 ///
 /// The solver's default constraint passes are projectDistanceSweep() and projectBendingSweep():

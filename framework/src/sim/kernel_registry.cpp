@@ -1,4 +1,4 @@
-#include "clothlab/sim/extensions.h"
+#include "clothlab/sim/kernel_registry.h"
 
 #include <map>
 #include <stdexcept>
