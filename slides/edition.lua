@@ -121,7 +121,6 @@ function Pandoc(doc)
     end
     local head = { pandoc.Header(2, pandoc.Inlines({ pandoc.Str(w.overview) })), pandoc.OrderedList(items) }
     doc.blocks = pandoc.List(head) .. doc.blocks
-    doc.blocks:insert(pandoc.Header(1, pandoc.Inlines({ pandoc.Str(w.bib) })))
     doc.blocks:extend(reference_slide(w.bib, keys, sources, lang))
     doc.meta.title = w.title
     doc.meta.subtitle = w.course_sub
