@@ -1,23 +1,20 @@
 #!/usr/bin/env bash
 # Checks that every concept, formula and algorithm line of the original course slides
-# (/work/shared/seed, "Advanced Game Physics -- Stoffsimulation") appears in the decks.
+# (/work/shared/seed, "Advanced Game Physics -- Stoffsimulation") appears on a projected slide, in
+# both editions: the text slides/edition_text.sh keeps of the decks for the language (speaker notes
+# left out) and preamble.tex. A list line is WHAT|NEEDLE (both editions) or WHAT|EN NEEDLE|DE NEEDLE.
 #   bash slides/check_seed.sh        (exit 1 and the missing items when something is missing)
 set -uo pipefail
 SRC=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-text=$(cat "$SRC"/[0-9][0-9]_*.md "$SRC/preamble.tex")
-missing=0 n=0
-while IFS='|' read -r what needle; do
-  [[ -z $what || $what == \#* ]] && continue
-  n=$((n + 1))
-  grep -qF -- "$needle" <<<"$text" || { echo "missing: $what  ($needle)"; missing=$((missing + 1)); }
-done <<'LIST'
+list=$(cat <<'LIST'
+
 # slide 2-3: introduction
 three parts: MSS|Masse-Feder-Systeme
 three parts: MFN|Masse-Feder-Netzwerke
 three parts: PBD|Position-Based-Dynamics
 MSS abbreviation|mass spring system, MSS
-most cloth simulations go back to MSS|Most cloth simulations go back to mass-spring systems
-other fields: parameterisation|parameterisation
+most cloth simulations go back to MSS|Most cloth simulations go back to mass-spring systems|Die meisten Stoffsimulationen gehen auf Masse-Feder-Systeme zurück
+other fields: parameterisation|parameterisation|Parameterisierung
 slide 4: history|Entwicklung Stoffsimulation
 Waters87|[Waters87]
 Provot96|[Provot96]
@@ -28,11 +25,11 @@ structure|Aufbau
 particles of mass m|Massepartikel
 stiffness k|Federhärte
 rest length l0|Ruhelänge
-spring force|spring force $\vec{F}_s$
-force opposes the deformation|opposes the force that caused the deformation
+spring force|spring force $\vec{F}_s$|Federkraft $\vec{F}_s$
+force opposes the deformation|opposes the force that caused the deformation|wirkt der Kraft entgegen, die die Deformation verursacht hat
 Hooke's law|Gesetz von Hooke
-linear in the deformation|**linear** in the deformation
-acts along the spring|acts **along the spring**
+linear in the deformation|**linear** in the deformation|**linear** in der Deformation
+acts along the spring|acts **along the spring**|wirkt **in Richtung der Feder**
 Hooke formula|\vec{F}_s = - \frac{\vb{p}_1 - \vb{p}_0}{\|\vb{p}_1 - \vb{p}_0\|}\; k \cdot \Delta l
 ODE|Differenzialgleichung
 v = x dot|v(t) = \dot{x}(t)
@@ -40,17 +37,17 @@ a = x ddot|a(t) = \ddot{x}(t)
 # slides 8-11: mass-spring networks
 MFN structure|Aufbau eines MFN
 MFN dynamics|Dynamik eines deformierten MFN
-MFN simulation|Simulation (\de{Simulation})
+MFN simulation|Simulation (\de{Simulation})|Simulation eines MFN
 integration error|Fehler der Integration
 solved explicitly|die DGL wird explizit gelöst
-error depends on dt|the error depends on the time step $\Delta t$
-unstable for large steps|unstable for large time steps
+error depends on dt|the error depends on the time step $\Delta t$|der Fehler hängt vom Zeitschritt $\Delta t$ ab
+unstable for large steps|unstable for large time steps|instabil für hohe Zeitschritte
 super-elasticity|Superelastizität
-rubber-like|rubber-like
-stiffness not unbounded|cannot be raised without limit
+rubber-like|rubber-like|gummiartigen Resultaten
+stiffness not unbounded|cannot be raised without limit|nicht unbegrenzt erhöhen
 T0|T_0 \approx \pi\sqrt{\frac{m}{k}}
 k_krit (corrected)|k_{krit} \approx m\,\frac{\pi^2}{\Delta t^2}
-the slide's slip named|upside down
+the slide's slip named|upside down|auf dem Kopf
 # slides 12-13: cloth with MFN
 data structure|Datenstruktur
 grid|auf einem Gitter angeordnete Massepartikel
@@ -66,7 +63,7 @@ not robust for large steps|stark unrobust
 stiffness bounded|Federhärten begrenzt
 natural period|Eigenperiode
 approach|Ansatz
-solve directly for positions|**directly for the positions**
+solve directly for positions|**directly for the positions**|**direkt für die Positionen**
 position x_i|$\vb{x}_i$
 predicted position|geschätzte Position
 inverse mass|inverse Masse
@@ -77,7 +74,7 @@ cost function|C_j : \mathbb{R}^{3 n_j} \rightarrow \mathbb{R}
 weight (stiffness)|Gewicht
 equality|Gleichung
 inequality|Ungleichung
-minimise the costs|minimise the costs
+minimise the costs|minimise the costs|die Kosten minimieren
 # slides 17-21: the algorithm, lines (1)-(17), and its four phases
 line 1|\pbdl{1}{0}{0}{\textbf{forall} vertices $i$}
 line 2|initialize $\vb{x}_i = \vb{x}_i^0,\ \vb{v}_i = \vb{v}_i^0,\ w_i = 1/m_i$
@@ -107,7 +104,7 @@ phase 3 name|Positionsschätzungen aktualisieren $\rightarrow$ Constraints löse
 phase 4 name|Geschwindigkeits-Update und Positionen setzen
 # slide 22: distance constraint
 distance constraint|Distanz-Constraint
-models a spring, linear costs|"linear costs"
+models a spring, linear costs|"linear costs"|"lineare Kosten"
 C distance|C(\vb{p}_1, \vb{p}_2) = |\vb{p}_1 - \vb{p}_2| - d
 projection|Projektion des Constraint
 dp1|\Delta\vb{p}_1 = -\frac{w_1}{w_1 + w_2}\,\bigl(|\vb{p}_1 - \vb{p}_2| - d\bigr)\,\frac{\vb{p}_1 - \vb{p}_2}{|\vb{p}_1 - \vb{p}_2|}
@@ -126,9 +123,23 @@ dp_i bending|\Delta\vb{p}_i = -\frac{w_i \sqrt{1 - d^2}\,\bigl(\arccos(d) - \var
 # slide 24: collision constraint
 collision constraint|Kollisions-Constraint
 C collision (corrected sign of h)|C(\vb{p}) = (\vb{p} - \vb{q}_s) \cdot \vb{n}_s - h
-the slide's + h named|the original slide prints "$+\,h$"
+the slide's + h named|the original slide prints "$+\,h$"|Die Originalfolie druckt "$+\,h$"
 projection: earlier lectures|Kollisionsantwort
 velocity treated separately|die Geschwindigkeit muss gesondert beachtet werden
 LIST
-echo "seed coverage: $((n - missing)) of $n items found in the decks"
-((missing == 0))
+)
+status=0
+for lang in en de; do
+  text=$(bash "$SRC/edition_text.sh" "$lang" --projected "$SRC"/[0-9][0-9]_*.md; cat "$SRC/preamble.tex")
+  missing=0 n=0
+  while IFS='|' read -r what en de; do
+    [[ -z $what || $what == \#* ]] && continue
+    n=$((n + 1))
+    needle=$en
+    [[ $lang == de && -n $de ]] && needle=$de
+    grep -qF -- "$needle" <<<"$text" || { echo "missing ($lang): $what  ($needle)"; missing=$((missing + 1)); }
+  done <<<"$list"
+  echo "seed coverage ($lang): $((n - missing)) of $n items found on the slides"
+  ((missing == 0)) || status=1
+done
+exit $status

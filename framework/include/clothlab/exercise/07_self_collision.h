@@ -3,9 +3,11 @@
 /// (räumliches Hashing).
 ///
 /// The student writes these functions in `exercises/07_self_collision/self_collision.cpp`;
-/// the task sheet is `exercises/07_self_collision/README.md`. The idea follows Teschner et al.,
-/// "Optimized spatial hashing for collision detection of deformable objects" (2003), and Müller
-/// et al. 2007 §4.4: particles are sorted into the cells of an infinite grid of spacing s, the cells
+/// the task sheet is `exercises/07_self_collision/README.md`. The hash follows Teschner et al.,
+/// "Optimized spatial hashing for collision detection of deformable objects" (2003); the separation of
+/// particle pairs follows Macklin et al., "Unified particle physics for real-time applications" (2014),
+/// and Müller's Ten Minute Physics self-collision tutorial (Müller et al. 2007 separate a point from a
+/// triangle instead): particles are sorted into the cells of an infinite grid of spacing s, the cells
 /// are folded into a table of T buckets by a hash function, and a particle's neighbours within a
 /// distance d ≤ s are found in the 3 × 3 × 3 cells around its own. Two particles i, j closer than
 /// the self-collision thickness h are pushed apart: the inequality constraint
