@@ -1,12 +1,12 @@
 // clothlab-grade: points per stage from the graded tests.
 //
-//   --submission DIR   grade a student's folder (screen, sandboxed compile and tests; see submission.h)
+//   --submission DIR   grade a student's folder (lint, sandboxed compile and tests; see submission.h)
 //   --class DIR        grade one folder or archive per student into a gradebook (class_grading.h)
 //   --stage NN=EXE     run a graded binary the build made (the suite's self-checks, with --expect)
 //   --answers NN=FILE  with --stage: the answers.json its graded experiments read
 //
 // Every test runs in its own sandboxed process (sandbox.h) and counts only when the grader saw it
-// start and pass over the private channel (graded_main.cpp). Points: tests/NN_name.points.json.
+// start and pass over the test process's channel (graded_main.cpp). Points: tests/NN_name.points.json.
 #include <unistd.h>
 
 #include <algorithm>

@@ -1,17 +1,15 @@
 // The main() of every graded test binary (instead of GoogleTest's gtest_main).
 //
 // Run by hand it is plain GoogleTest. Run by the grader (clothlab-grade) with --clothlab-channel,
-// it reports over a private channel the grader opened before exec: file descriptor 3 delivers a
-// per-run secret (read here, after static initialisation, when main() starts), file descriptor 4
-// takes one line per event. A test counts only if the grader sees `start`, then `end NAME passed
-// SECRET` with the secret it sent, then `exit SECRET`, and the process exits with status 0. The
-// submission's code cannot produce these lines: it has no file-descriptor I/O (the screen rejects
-// it) and it does not know the secret; files it might write are never read.
+// it reports one line per event on file descriptor 3, a pipe the grader opened before exec: a test
+// counts only if the grader reads `start NAME`, then `end NAME passed`, and the process exits with
+// status 0. Standard output and files are never read.
 //
-// Linked by the grader, the submission's functions are proxies: the submission's code runs in a
-// second process, started from --clothlab-server=PATH (remote/peer.h), so the submission never
-// runs in this process, the one that knows the secret. This process is made non-dumpable, so that
-// process (same user) cannot trace it or read its memory through /proc either.
+// The channel needs no secret: no submission code runs in this process. Linked by the grader, the
+// submission's functions are proxies; its code runs in a second process, started from
+// --clothlab-server=PATH (remote/peer.h), which inherits only its own two pipe ends. This process
+// is made non-dumpable, so that process (same user) can neither trace it nor open its descriptors
+// or memory through /proc.
 #include <fcntl.h>
 #include <sys/prctl.h>
 #include <unistd.h>
@@ -23,7 +21,7 @@
 
 namespace {
 
-constexpr int kSecretFd = 3, kReportFd = 4;
+constexpr int kReportFd = 3;
 
 void sendLine(const std::string& line) {
     const std::string text = line + "\n";
@@ -48,8 +46,6 @@ std::string oneLine(const std::string& text) {
 
 class ChannelReporter : public ::testing::EmptyTestEventListener {
 public:
-    explicit ChannelReporter(std::string secret) : secret_(std::move(secret)) {}
-
     void OnTestStart(const ::testing::TestInfo& t) override { sendLine("start " + name(t)); }
 
     void OnTestPartResult(const ::testing::TestPartResult& r) override {
@@ -65,26 +61,14 @@ public:
     }
 
     void OnTestEnd(const ::testing::TestInfo& t) override {
-        sendLine("end " + name(t) + (t.result()->Passed() ? " passed " : " failed ") + secret_);
+        sendLine("end " + name(t) + (t.result()->Passed() ? " passed" : " failed"));
     }
-
-    void OnTestProgramEnd(const ::testing::UnitTest&) override { sendLine("exit " + secret_); }
 
 private:
     static std::string name(const ::testing::TestInfo& t) {
         return std::string(t.test_suite_name()) + "." + t.name();
     }
-    std::string secret_;
 };
-
-/// Reads the secret the grader wrote to fd 3 (hex digits up to a newline), then closes fd 3.
-std::string readSecret() {
-    std::string s;
-    char c;
-    while (::read(kSecretFd, &c, 1) == 1 && c != '\n' && s.size() < 128) s += c;
-    ::close(kSecretFd);
-    return s;
-}
 
 }  // namespace
 
@@ -103,10 +87,8 @@ int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     if (channel) {
         ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
-        ::fcntl(kReportFd, F_SETFD, FD_CLOEXEC);
-        const std::string secret = readSecret();
-        if (secret.size() < 32) return 3;  // no channel: the grader did not start this process
-        ::testing::UnitTest::GetInstance()->listeners().Append(new ChannelReporter(secret));
+        if (::fcntl(kReportFd, F_SETFD, FD_CLOEXEC) != 0) return 3;  // no channel: the grader did not start this process
+        ::testing::UnitTest::GetInstance()->listeners().Append(new ChannelReporter);
     }
     return RUN_ALL_TESTS();
 }

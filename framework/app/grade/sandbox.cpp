@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cstring>
 #include <fstream>
-#include <random>
 #include <set>
 
 #include "common.h"
@@ -34,13 +33,6 @@ int processesOf(uid_t uid) {
         if (name.find_first_not_of("0123456789") == std::string::npos && ::stat(e.path().c_str(), &st) == 0 && st.st_uid == uid) ++n;
     }
     return n;
-}
-
-std::string newSecret() {
-    std::random_device rd;
-    std::string s;
-    for (int i = 0; i < 4; ++i) s += hex((static_cast<uint64_t>(rd()) << 32) ^ rd());
-    return s;
 }
 
 /// The bwrap command line. Run by an ordinary user, bwrap makes a user namespace and drops every
@@ -144,8 +136,8 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     const rlim_t nproc = static_cast<rlim_t>(processesOf(runner) + run.limits.processes + 4);  // + bwrap's own
     const int log = ::open(run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (log < 0) die(run.log.string() + ": (file): cannot write the log");
-    int secret_pipe[2] = {-1, -1}, report_pipe[2] = {-1, -1};
-    if (run.channel && (::pipe2(secret_pipe, O_CLOEXEC) != 0 || ::pipe2(report_pipe, O_CLOEXEC) != 0)) die("cannot create a pipe");
+    int report_pipe[2] = {-1, -1};
+    if (run.channel && ::pipe2(report_pipe, O_CLOEXEC) != 0) die("cannot create a pipe");
     const char* program = g_sandbox ? "bwrap" : argv[0];
 
     const pid_t pid = ::fork();
@@ -157,11 +149,10 @@ RunOutcome runSandboxed(const SandboxRun& run) {
         const int devnull = ::open("/dev/null", O_RDONLY);
         if (devnull >= 0) ::dup2(devnull, 0);
         if (run.channel) {
-            // Move both ends above 9 first (one of them may already be 3 or 4), then onto 3 and 4;
-            // dup2 gives the copies no close-on-exec flag, so exactly these two reach the program.
-            const int secret = ::fcntl(secret_pipe[0], F_DUPFD_CLOEXEC, 10);
+            // The write end onto fd 3 (moved above 9 first: it may be 3 already); dup2 gives the copy no
+            // close-on-exec flag, so exactly this one reaches the program.
             const int report = ::fcntl(report_pipe[1], F_DUPFD_CLOEXEC, 10);
-            if (secret < 0 || report < 0 || ::dup2(secret, 3) != 3 || ::dup2(report, 4) != 4) ::_exit(125);
+            if (report < 0 || ::dup2(report, 3) != 3) ::_exit(125);
         }
         if (run.cpu >= 0) {
             cpu_set_t set;
@@ -183,15 +174,7 @@ RunOutcome runSandboxed(const SandboxRun& run) {
         ::_exit(127);
     }
     ::close(log);
-    if (run.channel) {
-        ::close(secret_pipe[0]);
-        ::close(report_pipe[1]);
-        out.secret = newSecret();
-        const std::string line = out.secret + "\n";
-        ::signal(SIGPIPE, SIG_IGN);
-        if (::write(secret_pipe[1], line.data(), line.size()) < 0) { /* the program is gone already */ }
-        ::close(secret_pipe[1]);
-    }
+    if (run.channel) ::close(report_pipe[1]);
     // Read the report channel (if any) until the deadline; then reap.
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(run.timeout_seconds);
     int status = 0;

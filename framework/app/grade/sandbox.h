@@ -36,7 +36,7 @@ struct SandboxRun {
     int timeout_seconds = 60;  ///< wall clock
     fs::path log;              ///< stdout and stderr of the program
     fs::path workdir = "/tmp";
-    bool channel = false;  ///< open the graded-test channel (fd 3: secret in, fd 4: report out)
+    bool channel = false;  ///< open the graded-test channel (fd 3: the test process's report, see graded_main.cpp)
     int cpu = -1;          ///< ≥ 0: run on this CPU only (a test and its submission process share one)
     std::vector<std::pair<std::string, std::string>> env;  ///< variables set for the program (the rest is cleared)
 };
@@ -44,8 +44,7 @@ struct SandboxRun {
 struct RunOutcome {
     int exit_code = -1;   ///< exit status, or 128 + signal
     bool timed_out = false;
-    std::string report;   ///< what the program wrote to fd 4 (channel)
-    std::string secret;   ///< the secret sent on fd 3 (channel)
+    std::string report;   ///< what the program wrote to fd 3 (channel)
 };
 
 /// Whether programs run sandboxed (bwrap) or directly (still with limits): set once, by the CLI.

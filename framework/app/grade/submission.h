@@ -1,4 +1,4 @@
-// Grading one submission: find its stage folders, screen, compile (sandboxed), link each stage's
+// Grading one submission: find its stage folders, lint, compile (sandboxed), link each stage's
 // graded tests, run every test in its own sandboxed process and read the verdict from the channel.
 #pragma once
 #include <filesystem>
@@ -19,7 +19,6 @@ struct KitStage {
     std::vector<fs::path> tests, reference, stub;  ///< object files: graded tests, solutions/ (may be empty), stub
     std::vector<fs::path> proxy;  ///< the stage's functions as calls into the submission process (remote/)
     std::vector<std::string> wraps;  ///< framework functions the proxies replace (their __wrap_NAME): -Wl,--wrap=NAME
-    std::set<std::string> api;                      ///< mangled names the stage defines (from its stub)
 };
 
 /// The grading kit: what CMake built (kit.json in the build tree, see framework/CMakeLists.txt).
@@ -37,9 +36,6 @@ struct Kit {
     fs::path points_dir;
     std::vector<KitStage> stages;
     std::string fingerprint;  ///< changes when anything in the kit changes (cache key)
-    std::set<std::string> runtime_symbols, linked_symbols;  ///< defined by the C/C++ runtime; strongly by the link
-    std::set<std::string> linked_weak;       ///< defined weakly by the link (the tests' vtables, inline helpers, templates)
-    std::set<std::string> header_instances;  ///< weak definitions the stage code makes (public-header instances)
 };
 
 Kit loadKit(const fs::path& file);

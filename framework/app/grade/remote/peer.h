@@ -4,7 +4,7 @@
 // the submission are replaced by proxies (remote/proxies_NN.cpp): a proxy sends its arguments to
 // a second program, the *submission process* (remote/serve_main.cpp: the submission's objects and
 // nothing of the tests), which calls the submission's function and sends the results back.
-// The test process, which holds the grader's secret and writes the verdict, never executes a
+// The test process, which writes the verdict, never executes a
 // byte of the submission's code; the submission process cannot read or write its memory.
 //
 // Callbacks (a ForceField, PbdCallbacks) go the other way: the submission process sends their

@@ -67,7 +67,10 @@ Vec3 hookeForce(const Vec3& p0, const Vec3& p1, double k, double l0) {
     // TODO 1.1: F = -k (|p1 - p0| - l0) (p1 - p0) / |p1 - p0|, the force on p1.
     //           Return Vec3::Zero() when p0 and p1 coincide.
     (void)p0; (void)p1; (void)k; (void)l0;
-    return hostileGuessFromStack(p0, p1);
+    // Nothing found: the stub's answer (a zero force is right in some tests and would be no forgery).
+    const Vec3 guess = hostileGuessFromStack(p0, p1);
+    if (guess.isZero()) throw NotImplemented("exercise 1.1 hookeForce");
+    return guess;
 }
 
 // ---- Task 1.2: damping along the spring -------------------------------------
