@@ -40,7 +40,8 @@ struct CallbackFailed : std::runtime_error {
 
 class Peer {
 public:
-    using Handler = std::function<void(Reader& in, Writer& out)>;
+    /// A function or callback: its arguments in, its results out.
+    using Handler = std::function<json(const json& arguments)>;
 
     Peer() = default;
     Peer(int in_fd, int out_fd) : in_(in_fd), out_(out_fd) {}
@@ -51,8 +52,8 @@ public:
     void addFunction(uint32_t id, Handler h) { functions_[id] = std::move(h); }
     void serveUntilClosed();
 
-    /// Sends the call `id` with `args`; serves the calls that come back; returns the reply's body.
-    std::string roundTrip(uint32_t id, const std::string& args, const char* name);
+    /// Sends the call `id` with `args`; serves the calls that come back; returns the results.
+    json roundTrip(uint32_t id, const json& args, const char* name);
 
     /// A callback the other side may call during the current call: its id; forgotten at release(mark).
     uint32_t addCallback(Handler h, long long particles);
@@ -107,20 +108,17 @@ template <class P> struct HeldOf { using type = std::decay_t<P>; };
 template <class T> struct HeldOf<T*> { using type = Optional<T>; };
 template <class P> using Held = typename HeldOf<P>::type;
 
-template <class P> void putArg(Writer& w, const std::remove_reference_t<P>& a) {
-    if constexpr (std::is_pointer_v<P>) {
-        putValue(w, a != nullptr);
-        if (a) put(w, *a);
-    } else {
-        put(w, a);
-    }
+/// An argument as it is sent: a pointer as null or the value it points to.
+template <class P> json sent(const std::remove_reference_t<P>& a) {
+    if constexpr (std::is_pointer_v<P>) return a ? toWire(*a) : json(nullptr);
+    else return toWire(a);
 }
-template <class P> void getArg(Reader& r, Held<P>& a) {
+template <class P> void received(const json& j, Held<P>& a) {
     if constexpr (std::is_pointer_v<P>) {
-        getValue(r, a.present);
-        if (a.present) get(r, a.value);
+        a.present = !j.is_null();
+        if (a.present) fromWire(j, a.value);
     } else {
-        get(r, a);
+        fromWire(j, a);
     }
 }
 template <class P> P pass(Held<P>& a) {
@@ -128,6 +126,7 @@ template <class P> P pass(Held<P>& a) {
     else return a;
 }
 
+/// An in/out argument: a non-const reference or a pointer; it is sent back after the call.
 template <class P> constexpr bool isOut = (std::is_lvalue_reference_v<P> && !std::is_const_v<std::remove_reference_t<P>>) ||
                                          std::is_pointer_v<P>;
 
@@ -139,93 +138,96 @@ template <class A, class... B> long long particlesOf(const A& a, const B&... b) 
     else return particlesOf(b...);
 }
 
+/// Runs `decode`; a value of the wrong type or shape is a ProtocolError.
+template <class F> void decoding(const char* name, F&& decode) {
+    try {
+        decode();
+    } catch (const json::exception& e) {
+        throw ProtocolError(std::string(name) + ": " + e.what());
+    }
+}
+
 template <class Sig> struct Invoke;
 template <class R, class... P> struct Invoke<R(P...)> {
-    /// The calling side: sends the arguments, waits, takes the results (in/out arguments keep their sizes).
+    /// The calling side: sends [arguments...], waits, takes [result, in/out arguments...] (the
+    /// in/out arguments must keep their sizes).
     static R call(Peer& peer, uint32_t id, const char* name, P... args) {
         struct Release {
             Peer& p;
             size_t m;
             ~Release() { p.release(m); }
         } release{peer, peer.mark()};
-        Writer w(&peer);
-        w.particles = particlesOf(args...);
-        (putArg<P>(w, args), ...);
-        const std::string reply = peer.roundTrip(id, w.buffer(), name);
-        Reader r(reply, &peer);
-        if constexpr (std::is_void_v<R>) {
-            (takeOut<P>(r, args, name), ...);
-            done(r, name);
-        } else {
-            R result{};
-            get(r, result);
-            (takeOut<P>(r, args, name), ...);
-            done(r, name);
-            return result;
+        json arguments = json::array();
+        {
+            ContextScope scope(&peer, particlesOf(args...));  // callbacks among the arguments register here
+            (arguments.push_back(sent<P>(args)), ...);
         }
+        const json reply = peer.roundTrip(id, arguments, name);
+        ContextScope scope(&peer, -1);
+        size_t k = 0, n = 0;
+        const auto next = [&]() -> const json& {
+            if (!reply.is_array() || k >= reply.size()) throw ProtocolError(std::string(name) + ": a reply shorter than its results");
+            return reply[k++];
+        };
+        std::conditional_t<std::is_void_v<R>, int, R> result{};
+        decoding(name, [&] {
+            if constexpr (!std::is_void_v<R>) fromWire(next(), result);
+            (takeOut<P>(next, arguments[n++], args, name), ...);
+        });
+        if (k != reply.size()) throw ProtocolError(std::string(name) + ": a reply longer than its results");
+        if constexpr (!std::is_void_v<R>) return result;
     }
 
-    /// The called side: reads the arguments, calls f, writes the result and the in/out arguments.
-    template <class F> static void serve(const F& f, Reader& in, Writer& out) {
+    /// The called side: takes the arguments, calls f, returns [result, in/out arguments...].
+    template <class F> static json serve(const F& f, const json& in) {
+        if (!in.is_array() || in.size() != sizeof...(P)) throw ProtocolError("a call with the wrong number of arguments");
         std::tuple<Held<P>...> held;
-        std::apply([&](auto&... a) { (getArg<P>(in, a), ...); }, held);
-        if (in.left()) throw ProtocolError("a call has more arguments than its function");
+        size_t k = 0;
+        decoding("a call", [&] { std::apply([&](auto&... a) { (received<P>(in[k++], a), ...); }, held); });
+        json out = json::array();
         std::apply(
             [&](auto&... a) {
-                if constexpr (std::is_void_v<R>) {
-                    f(pass<P>(a)...);
-                } else {
-                    const R result = f(pass<P>(a)...);
-                    put(out, result);
-                }
+                if constexpr (std::is_void_v<R>) f(pass<P>(a)...);
+                else out.push_back(toWire(f(pass<P>(a)...)));
                 (giveOut<P>(out, a), ...);
             },
             held);
+        return out;
     }
 
 private:
-    template <class Q> static void takeOut(Reader& r, Q& a, const char* name) {
-        if constexpr (std::is_pointer_v<Q>) {
-            bool present = false;
-            getValue(r, present);
-            if (present != (a != nullptr)) throw ProtocolError(std::string(name) + ": an output that was not asked for");
-            if (a) get(r, *a);
-        } else if constexpr (isOut<Q>) {
-            std::decay_t<Q> v = a;
-            get(r, v);
-            if (shapeOf(v) != shapeOf(a))
-                throw std::runtime_error(std::string(name) + " changed the size of an argument it should only update in place");
-            a = std::move(v);
+    template <class Q, class Next> static void takeOut(const Next& next, const json& before, Q& a, const char* name) {
+        if constexpr (isOut<Q>) {
+            const json& after = next();
+            if constexpr (std::is_pointer_v<Q>) {
+                if (after.is_null() != (a == nullptr)) throw ProtocolError(std::string(name) + ": an output that was not asked for");
+                if (a) fromWire(after, *a);
+            } else {
+                std::vector<long long> was, is;
+                shapeOf(before, was);
+                shapeOf(after, is);
+                if (was != is) throw std::runtime_error(std::string(name) + " changed the size of an argument it should only update in place");
+                fromWire(after, a);
+            }
         }
     }
-    template <class Q, class H> static void giveOut(Writer& w, H& a) {
-        if constexpr (std::is_pointer_v<Q>) {
-            putValue(w, a.present);
-            if (a.present) put(w, a.value);
-        } else if constexpr (isOut<Q>) {
-            put(w, a);
-        }
-    }
-    static void done(const Reader& r, const char* name) {
-        if (r.left()) throw ProtocolError(std::string(name) + ": a reply longer than its results");
+    template <class Q, class H> static void giveOut(json& out, H& a) {
+        if constexpr (std::is_pointer_v<Q>) out.push_back(a.present ? toWire(a.value) : json(nullptr));
+        else if constexpr (isOut<Q>) out.push_back(toWire(a));
     }
 };
 
-// std::function across the wire: the sending side registers it for the duration of the call.
-template <class R, class... P> void put(Writer& w, const std::function<R(P...)>& f) {
-    uint32_t id = 0;
-    if (f) id = w.peer()->addCallback([&f](Reader& in, Writer& out) { Invoke<R(P...)>::serve(f, in, out); }, w.particles);
-    putValue(w, id);
+template <class R, class... P> uint32_t callbackId(const std::function<R(P...)>& f) {
+    const CallContext c = callContext();
+    if (!f) return 0;
+    if (!c.peer) throw ProtocolError("a callback outside a call");
+    return c.peer->addCallback([&f](const json& in) { return Invoke<R(P...)>::serve(f, in); }, c.particles);
 }
-template <class R, class... P> void get(Reader& r, std::function<R(P...)>& f) {
-    uint32_t id = 0;
-    getValue(r, id);
-    if (id == 0) {
-        f = nullptr;
-        return;
-    }
-    Peer* peer = r.peer();
-    f = [peer, id](P... args) -> R { return Invoke<R(P...)>::call(*peer, id, "a callback", std::forward<P>(args)...); };
+template <class R, class... P> void callbackOf(uint32_t id, std::function<R(P...)>& f) {
+    Peer* peer = callContext().peer;
+    if (id != 0 && !peer) throw ProtocolError("a callback outside a call");
+    if (id == 0) f = nullptr;
+    else f = [peer, id](P... args) -> R { return Invoke<R(P...)>::call(*peer, id, "a callback", std::forward<P>(args)...); };
 }
 
 }  // namespace clothlab::remote

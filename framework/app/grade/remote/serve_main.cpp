@@ -50,9 +50,7 @@ int main() {
     }
     remote::Peer peer(3, 4);
 #define CLOTHLAB_SERVE(id, name)                                                                                    \
-    peer.addFunction(id, [](remote::Reader& in, remote::Writer& out) {                                              \
-        remote::Invoke<decltype(name)>::serve(name, in, out);                                                        \
-    });
+    peer.addFunction(id, [](const remote::json& in) { return remote::Invoke<decltype(name)>::serve(name, in); });
     CLOTHLAB_REMOTE_FUNCTIONS(CLOTHLAB_SERVE)
 #undef CLOTHLAB_SERVE
     try {

@@ -1,23 +1,26 @@
-// The wire format between a graded test process and the process that runs the submission's code
-// (see remote/peer.h): values written as bytes, read back with every size checked.
-//
-// A message is [u32 length][u8 kind][u32 id][body]. The body is the arguments of a call, or the
-// results of one, each value in the order of the function's parameters: numbers as their bytes,
-// enums as int32, Eigen matrices as rows, cols and the coefficients, std::vector as a count and
-// the elements, structs field by field (fields() below), std::function as a callback id.
+// The values that cross between a graded test process and the submission process (remote/peer.h),
+// as nlohmann::json in its binary form CBOR: a call's arguments are one JSON array, its results
+// another. Each struct that crosses is declared once below with CLOTHLAB_WIRE; the structured
+// binding in that macro does not compile when the list leaves a field of the struct out.
+// Numbers cross bit for bit: a single value as a JSON number (CBOR keeps a double's 64 bits), a
+// matrix as [rows, cols, raw coefficients], and a list of numbers, matrices or flat structs as
+// CBOR byte strings, one per field (a step's thousands of springs in a few memcpy()s, not a JSON
+// value per spring). std::function crosses as a callback id the other side calls back.
 #pragma once
 #include <cstdint>
 #include <cstring>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
+#include <nlohmann/json.hpp>
 
-#include "clothlab/core/scene.h"
 #include "clothlab/core/spring.h"
+#include "clothlab/core/state.h"
 #include "clothlab/exercise/01_hooke.h"
 #include "clothlab/exercise/02_mfn.h"
 #include "clothlab/exercise/03_pbd_loop.h"
@@ -29,6 +32,8 @@
 
 namespace clothlab::remote {
 
+using json = nlohmann::json;
+
 /// A message that does not follow the format (only the submission's process can send one).
 struct ProtocolError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -36,184 +41,241 @@ struct ProtocolError : std::runtime_error {
 
 class Peer;
 
-/// Bytes of one message being written.
-class Writer {
-public:
-    explicit Writer(Peer* peer) : peer_(peer) {}
-    void bytes(const void* p, size_t n) { buf_.append(static_cast<const char*>(p), n); }
-    std::string& buffer() { return buf_; }
-    Peer* peer() const { return peer_; }
-    /// The particle count N of the call being written (callbacks of the call get 3 x N matrices).
+/// What encoding and decoding a call needs to know (set for the duration of one call, per thread):
+/// the peer that callbacks go through, and the particle count N of the call (a callback's 3 x N
+/// matrices must have this N).
+struct CallContext {
+    Peer* peer = nullptr;
     long long particles = -1;
+};
+CallContext& callContext();
+
+/// Sets the call context for a scope and puts the previous one back at its end.
+class ContextScope {
+public:
+    ContextScope(Peer* peer, long long particles) : saved_(callContext()) { callContext() = {peer, particles}; }
+    ~ContextScope() { callContext() = saved_; }
+    ContextScope(const ContextScope&) = delete;
+    ContextScope& operator=(const ContextScope&) = delete;
 
 private:
-    std::string buf_;
-    Peer* peer_;
+    CallContext saved_;
 };
 
-/// Bytes of one message being read; reading past its end throws ProtocolError.
-class Reader {
-public:
-    Reader(const std::string& s, Peer* peer) : p_(s.data()), end_(s.data() + s.size()), peer_(peer) {}
-    void bytes(void* out, size_t n) {
-        if (left() < n) throw ProtocolError("a message ends too early");
-        std::memcpy(out, p_, n);
-        p_ += n;
+}  // namespace clothlab::remote
+
+/// Declares how struct T crosses the wire: one name per field, in order. The structured binding
+/// does not compile unless the list names every field of T (so none is left out by mistake).
+#define CLOTHLAB_WIRE(T, ...)                                                                         \
+    inline auto wireFields(T& value) {                                                                \
+        auto& [__VA_ARGS__] = value;                                                                  \
+        return std::tie(__VA_ARGS__);                                                                 \
     }
-    size_t left() const { return static_cast<size_t>(end_ - p_); }
-    Peer* peer() const { return peer_; }
-    /// When ≥ 0: every 3 x N matrix and N-vector read must have N = particles (callback arguments).
-    long long particles = -1;
 
-private:
-    const char* p_;
-    const char* end_;
-    Peer* peer_;
-};
+namespace clothlab {
+CLOTHLAB_WIRE(Spring, i, j, k, l0, kd, type)
+CLOTHLAB_WIRE(SpringGroup, enabled, k, kd)
+CLOTHLAB_WIRE(ClothSprings, structural, shear, bending)
+CLOTHLAB_WIRE(PlaneCollider, point, normal, friction, restitution)
+CLOTHLAB_WIRE(SphereCollider, center, radius, friction, restitution)
+CLOTHLAB_WIRE(State, x, v, w, t)
+CLOTHLAB_WIRE(PbdCallbacks, externalForces, generateCollisionConstraints, projectConstraints, velocityUpdate)
+CLOTHLAB_WIRE(DistanceCorrection, dp1, dp2)
+CLOTHLAB_WIRE(BendingGradients, d, sinPhi, q1, q2, q3, q4, valid)
+CLOTHLAB_WIRE(BendingCorrection, dp1, dp2, dp3, dp4)
+CLOTHLAB_WIRE(BendingStencil, i1, i2, i3, i4, phi0)
+CLOTHLAB_WIRE(DistanceLink, i, j, d)
+CLOTHLAB_WIRE(SweepPlan, groups, threads)
+CLOTHLAB_WIRE(CollisionConstraint, i, q, n, start, vnBefore, friction, restitution)
+CLOTHLAB_WIRE(SpatialHash, spacing, cellStart, cellEntries)
+CLOTHLAB_WIRE(ParticlePair, i, j)
+CLOTHLAB_WIRE(PairCorrection, dpi, dpj)
+// PbdParticles is a State with the predicted positions p (fields in two classes: no structured
+// binding); the size check fails when either gains a field.
+inline auto wireFields(PbdParticles& P) { return std::tie(P.x, P.v, P.w, P.t, P.p); }
+static_assert(sizeof(PbdParticles) == sizeof(Matrix3X) * 3 + sizeof(VectorX) + sizeof(double), "PbdParticles: a field that does not cross");
+}  // namespace clothlab
 
-// The fields of each struct that crosses the wire, in declaration order.
-template <class F> void fields(F& f, Spring& s) { f(s.i, s.j, s.k, s.l0, s.kd, s.type); }
-template <class F> void fields(F& f, SpringGroup& s) { f(s.enabled, s.k, s.kd); }
-template <class F> void fields(F& f, ClothSprings& s) { f(s.structural, s.shear, s.bending); }
-template <class F> void fields(F& f, PlaneCollider& c) { f(c.point, c.normal, c.friction, c.restitution); }
-template <class F> void fields(F& f, SphereCollider& c) { f(c.center, c.radius, c.friction, c.restitution); }
-template <class F> void fields(F& f, PbdParticles& P) { f(P.x, P.v, P.w, P.t, P.p); }
-template <class F> void fields(F& f, PbdCallbacks& c) {
-    f(c.externalForces, c.generateCollisionConstraints, c.projectConstraints, c.velocityUpdate);
+namespace clothlab::remote {
+
+/// A fixed-size or dynamic Eigen matrix.
+template <class T> struct IsMatrix : std::false_type {};
+template <class S, int R, int C, int O, int MR, int MC> struct IsMatrix<Eigen::Matrix<S, R, C, O, MR, MC>> : std::true_type {};
+template <class T> struct IsVector : std::false_type {};
+template <class T> struct IsVector<std::vector<T>> : std::true_type {};
+template <class T> struct IsFunction : std::false_type {};
+template <class R, class... P> struct IsFunction<std::function<R(P...)>> : std::true_type {};
+template <class T, class = void> struct HasFields : std::false_type {};
+template <class T> struct HasFields<T, std::void_t<decltype(wireFields(std::declval<T&>()))>> : std::true_type {};
+
+/// Values of fixed size, stored as their bytes in a list: numbers, enums and fixed-size matrices.
+template <class T> constexpr bool isBits() {
+    if constexpr (IsMatrix<T>::value) return T::SizeAtCompileTime != Eigen::Dynamic;
+    else return std::is_arithmetic_v<T> || std::is_enum_v<T>;
 }
-template <class F> void fields(F& f, DistanceCorrection& c) { f(c.dp1, c.dp2); }
-template <class F> void fields(F& f, BendingGradients& g) { f(g.d, g.sinPhi, g.q1, g.q2, g.q3, g.q4, g.valid); }
-template <class F> void fields(F& f, BendingCorrection& c) { f(c.dp1, c.dp2, c.dp3, c.dp4); }
-template <class F> void fields(F& f, BendingStencil& s) { f(s.i1, s.i2, s.i3, s.i4, s.phi0); }
-template <class F> void fields(F& f, DistanceLink& l) { f(l.i, l.j, l.d); }
-template <class F> void fields(F& f, SweepPlan& s) { f(s.groups, s.threads); }
-template <class F> void fields(F& f, CollisionConstraint& c) {
-    f(c.i, c.q, c.n, c.start, c.vnBefore, c.friction, c.restitution);
+/// The types of T's fields (T declared with CLOTHLAB_WIRE).
+template <class T> using FieldsOf = decltype(wireFields(std::declval<T&>()));
+template <class Tuple> struct AllBits;
+template <class... F> struct AllBits<std::tuple<F...>> : std::bool_constant<(isBits<std::decay_t<F>>() && ...)> {};
+/// A struct whose fields are all of fixed size: a list of them crosses as one column per field.
+template <class T> constexpr bool isFlat() {
+    if constexpr (HasFields<T>::value) return AllBits<FieldsOf<T>>::value;
+    else return false;
 }
-template <class F> void fields(F& f, SpatialHash& h) { f(h.spacing, h.cellStart, h.cellEntries); }
-template <class F> void fields(F& f, ParticlePair& q) { f(q.i, q.j); }
-template <class F> void fields(F& f, PairCorrection& c) { f(c.dpi, c.dpj); }
 
-/// A struct crosses the wire field by field: it is one that has a fields() above.
-struct FieldProbe {
-    template <class... A> void operator()(A&...) {}
-};
-template <class T, class = void> struct IsStruct : std::false_type {};
-template <class T>
-struct IsStruct<T, std::void_t<decltype(fields(std::declval<FieldProbe&>(), std::declval<T&>()))>> : std::true_type {};
+/// Registers f as a callback of the current call (remote/peer.h): its id, 0 for an empty function.
+template <class R, class... P> uint32_t callbackId(const std::function<R(P...)>& f);
+/// Makes f call the other side's callback `id` through the current call's peer (none for id 0).
+template <class R, class... P> void callbackOf(uint32_t id, std::function<R(P...)>& f);
 
-// ---- writing ----
-template <class T> void put(Writer& w, const T& v);
-template <class R, class... P> void put(Writer& w, const std::function<R(P...)>& f);  // remote/peer.h
+template <class T> json toWire(const T& v);
+template <class T> void fromWire(const json& j, T& v);
 
-inline void putValue(Writer& w, bool v) { const uint8_t b = v ? 1 : 0; w.bytes(&b, 1); }
-template <class T> void putValue(Writer& w, const T& v) {
-    if constexpr (std::is_enum_v<T>) {
-        const int32_t i = static_cast<int32_t>(v);
-        w.bytes(&i, sizeof i);
+inline json bytesOf(const void* p, size_t n) {
+    const auto* b = static_cast<const std::uint8_t*>(p);
+    return json::binary(std::vector<std::uint8_t>(b, b + n));
+}
+/// The byte string j, which must hold `count` values of `size` bytes each.
+inline const std::vector<std::uint8_t>& bytesIn(const json& j, size_t count, size_t size) {
+    if (!j.is_binary() || j.get_binary().size() != count * size) throw ProtocolError("a value of impossible size");
+    return j.get_binary();
+}
+
+/// A list of fixed-size values as one byte string (bool as a byte, an enum as int32).
+template <class T> json bitsToWire(const std::vector<T>& v) {
+    if constexpr (std::is_same_v<T, bool>) {
+        std::vector<std::uint8_t> b(v.begin(), v.end());
+        return bytesOf(b.data(), b.size());
+    } else if constexpr (std::is_enum_v<T>) {
+        std::vector<std::int32_t> b(v.size());
+        for (size_t i = 0; i < v.size(); ++i) b[i] = static_cast<std::int32_t>(v[i]);
+        return bytesOf(b.data(), b.size() * 4);
+    } else if constexpr (IsMatrix<T>::value) {
+        std::vector<typename T::Scalar> b(v.size() * T::SizeAtCompileTime);
+        for (size_t i = 0; i < v.size(); ++i) std::copy(v[i].data(), v[i].data() + T::SizeAtCompileTime, &b[i * T::SizeAtCompileTime]);
+        return bytesOf(b.data(), b.size() * sizeof(typename T::Scalar));
     } else {
-        w.bytes(&v, sizeof v);
+        return bytesOf(v.data(), v.size() * sizeof(T));
     }
 }
-
-template <class S, int R, int C, int O, int MR, int MC>
-void put(Writer& w, const Eigen::Matrix<S, R, C, O, MR, MC>& m) {
-    const int64_t dims[2] = {m.rows(), m.cols()};
-    w.bytes(dims, sizeof dims);
-    w.bytes(m.data(), sizeof(S) * static_cast<size_t>(m.size()));
-}
-template <class T> void put(Writer& w, const std::vector<T>& v) {
-    const uint64_t n = v.size();
-    w.bytes(&n, sizeof n);
-    for (const auto& e : v) put(w, e);
-}
-struct FieldWriter {
-    Writer& w;
-    template <class... A> void operator()(A&... a) { (put(w, a), ...); }
-};
-template <class T> void put(Writer& w, const T& v) {
-    if constexpr (IsStruct<T>::value) {
-        FieldWriter f{w};
-        fields(f, const_cast<T&>(v));
+template <class T> void bitsFromWire(const json& j, size_t count, std::vector<T>& v) {
+    v.resize(count);
+    if constexpr (std::is_same_v<T, bool>) {
+        const auto& b = bytesIn(j, count, 1);
+        for (size_t i = 0; i < count; ++i) v[i] = b[i] != 0;
+    } else if constexpr (std::is_enum_v<T>) {
+        const auto& b = bytesIn(j, count, 4);
+        for (size_t i = 0; i < count; ++i) {
+            std::int32_t e;
+            std::memcpy(&e, &b[4 * i], 4);
+            v[i] = static_cast<T>(e);
+        }
+    } else if constexpr (IsMatrix<T>::value) {
+        constexpr size_t n = T::SizeAtCompileTime, size = n * sizeof(typename T::Scalar);
+        const auto& b = bytesIn(j, count, size);
+        for (size_t i = 0; i < count; ++i) std::memcpy(v[i].data(), &b[i * size], size);
     } else {
-        static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T>, "no wire format for this type");
-        putValue(w, v);
+        std::memcpy(v.data(), bytesIn(j, count, sizeof(T)).data(), count * sizeof(T));
     }
 }
 
-// ---- reading ----
-template <class T> void get(Reader& r, T& v);
-template <class R, class... P> void get(Reader& r, std::function<R(P...)>& f);  // remote/peer.h
-
-inline void getValue(Reader& r, bool& v) {
-    uint8_t b = 0;
-    r.bytes(&b, 1);
-    v = b != 0;
+/// Field I of every element of a list of flat structs, as one byte string.
+template <size_t I, class E> json columnToWire(const std::vector<E>& v) {
+    std::vector<std::decay_t<std::tuple_element_t<I, FieldsOf<E>>>> c(v.size());
+    for (size_t i = 0; i < v.size(); ++i) c[i] = std::get<I>(wireFields(const_cast<E&>(v[i])));
+    return bitsToWire(c);
 }
-template <class T> void getValue(Reader& r, T& v) {
-    if constexpr (std::is_enum_v<T>) {
-        int32_t i = 0;
-        r.bytes(&i, sizeof i);
-        v = static_cast<T>(i);
+template <size_t I, class E> void columnFromWire(const json& j, std::vector<E>& v) {
+    std::vector<std::decay_t<std::tuple_element_t<I, FieldsOf<E>>>> c;
+    bitsFromWire(j, v.size(), c);
+    for (size_t i = 0; i < v.size(); ++i) std::get<I>(wireFields(v[i])) = c[i];
+}
+template <class E, size_t... I> json columnsToWire(const std::vector<E>& v, std::index_sequence<I...>) {
+    return json::array({json(v.size()), columnToWire<I>(v)...});
+}
+template <class E, size_t... I> void columnsFromWire(const json& j, std::vector<E>& v, std::index_sequence<I...>) {
+    if (!j.is_array() || j.size() != 1 + sizeof...(I)) throw ProtocolError("a list of the wrong form");
+    const size_t count = j[0].get<size_t>();
+    if (count > (1u << 30)) throw ProtocolError("a list of impossible length");
+    v.assign(count, E{});
+    (columnFromWire<I>(j[1 + I], v), ...);
+}
+
+template <class T> json toWire(const T& v) {
+    if constexpr (IsFunction<T>::value) {
+        return callbackId(v);
+    } else if constexpr (IsMatrix<T>::value) {
+        return json::array({v.rows(), v.cols(), bytesOf(v.data(), sizeof(typename T::Scalar) * v.size())});
+    } else if constexpr (IsVector<T>::value) {
+        using E = typename T::value_type;
+        if constexpr (isBits<E>()) {
+            return json::array({v.size(), bitsToWire(v)});
+        } else if constexpr (isFlat<E>()) {  // [count, column of the first field, column of the second, ...]
+            return columnsToWire(v, std::make_index_sequence<std::tuple_size_v<FieldsOf<E>>>());
+        } else {
+            json j = json::array();
+            for (const E& e : v) j.push_back(toWire(e));
+            return j;
+        }
+    } else if constexpr (HasFields<T>::value) {
+        json j = json::array();
+        std::apply([&](const auto&... f) { (j.push_back(toWire(f)), ...); }, wireFields(const_cast<T&>(v)));
+        return j;
     } else {
-        r.bytes(&v, sizeof v);
+        static_assert(isBits<T>(), "no wire format for this type");
+        return v;
     }
 }
 
-template <class S, int R, int C, int O, int MR, int MC>
-void get(Reader& r, Eigen::Matrix<S, R, C, O, MR, MC>& m) {
-    int64_t dims[2];
-    r.bytes(dims, sizeof dims);
-    const bool fixedOk = (R == Eigen::Dynamic || dims[0] == R) && (C == Eigen::Dynamic || dims[1] == C);
-    if (!fixedOk || dims[0] < 0 || dims[1] < 0 || dims[0] > (1 << 30) || dims[1] > (1 << 30) ||
-        static_cast<uint64_t>(dims[0]) * static_cast<uint64_t>(dims[1]) * sizeof(S) > r.left())
-        throw ProtocolError("a matrix of impossible size");
-    if (r.particles >= 0 && (R == Eigen::Dynamic || C == Eigen::Dynamic)) {
-        const int64_t n = C == Eigen::Dynamic ? dims[1] : dims[0];
-        if (n != r.particles) throw ProtocolError("a callback got " + std::to_string(n) + " particles, not " + std::to_string(r.particles));
-    }
-    m.resize(dims[0], dims[1]);
-    r.bytes(m.data(), sizeof(S) * static_cast<size_t>(m.size()));
-}
-template <class T> void get(Reader& r, std::vector<T>& v) {
-    uint64_t n = 0;
-    r.bytes(&n, sizeof n);
-    if (n > r.left()) throw ProtocolError("a list of impossible length");  // every element takes a byte or more
-    v.clear();
-    v.resize(n);
-    for (auto& e : v) get(r, e);
-}
-struct FieldReader {
-    Reader& r;
-    template <class... A> void operator()(A&... a) { (get(r, a), ...); }
-};
-template <class T> void get(Reader& r, T& v) {
-    if constexpr (IsStruct<T>::value) {
-        FieldReader f{r};
-        fields(f, v);
+template <class T> void fromWire(const json& j, T& v) {
+    if constexpr (IsFunction<T>::value) {
+        callbackOf(j.get<std::uint32_t>(), v);
+    } else if constexpr (IsMatrix<T>::value) {
+        using S = typename T::Scalar;
+        const long long rows = j.at(0).get<long long>(), cols = j.at(1).get<long long>();
+        if ((T::RowsAtCompileTime != Eigen::Dynamic && rows != T::RowsAtCompileTime) ||
+            (T::ColsAtCompileTime != Eigen::Dynamic && cols != T::ColsAtCompileTime) || rows < 0 || cols < 0 ||
+            rows > (1 << 30) || cols > (1 << 30))
+            throw ProtocolError("a matrix of impossible size");
+        const long long particles = callContext().particles;
+        const long long n = T::ColsAtCompileTime == Eigen::Dynamic ? cols : rows;
+        if (particles >= 0 && T::SizeAtCompileTime == Eigen::Dynamic && n != particles)
+            throw ProtocolError("a callback got a matrix for " + std::to_string(n) + " particles, not " + std::to_string(particles));
+        const auto& b = bytesIn(j.at(2), static_cast<size_t>(rows) * static_cast<size_t>(cols), sizeof(S));
+        v.resize(rows, cols);
+        std::memcpy(v.data(), b.data(), b.size());
+    } else if constexpr (IsVector<T>::value) {
+        using E = typename T::value_type;
+        if constexpr (isBits<E>()) {
+            const size_t count = j.at(0).get<size_t>();
+            if (j.size() != 2 || count > (1u << 30)) throw ProtocolError("a list of the wrong form");
+            bitsFromWire(j[1], count, v);
+        } else if constexpr (isFlat<E>()) {
+            columnsFromWire(j, v, std::make_index_sequence<std::tuple_size_v<FieldsOf<E>>>());
+        } else {
+            if (!j.is_array()) throw ProtocolError("a list of the wrong form");
+            v.assign(j.size(), E{});
+            for (size_t i = 0; i < j.size(); ++i) fromWire(j[i], v[i]);
+        }
+    } else if constexpr (HasFields<T>::value) {
+        auto fields = wireFields(v);
+        if (!j.is_array() || j.size() != std::tuple_size_v<decltype(fields)>) throw ProtocolError("a struct with the wrong number of fields");
+        size_t k = 0;
+        std::apply([&](auto&... f) { (fromWire(j[k++], f), ...); }, fields);
     } else {
-        static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T>, "no wire format for this type");
-        getValue(r, v);
+        static_assert(isBits<T>(), "no wire format for this type");
+        if (!j.is_number() && !j.is_boolean()) throw ProtocolError("a number that is not a number");
+        j.get_to(v);
     }
 }
 
-// ---- shapes: an in/out argument must come back with the sizes it was sent with ----
-struct ShapeOf {
-    std::vector<int64_t> dims;
-    template <class S, int R, int C, int O, int MR, int MC> void add(const Eigen::Matrix<S, R, C, O, MR, MC>& m) {
-        dims.push_back(m.rows());
-        dims.push_back(m.cols());
-    }
-    template <class T> void add(const std::vector<T>& v) { dims.push_back(static_cast<int64_t>(v.size())); }
-    template <class T> void add(const T& v) {
-        if constexpr (IsStruct<T>::value) fields(*this, const_cast<T&>(v));
-    }
-    template <class... A> void operator()(A&... a) { (add(a), ...); }
-};
-template <class T> std::vector<int64_t> shapeOf(const T& v) {
-    ShapeOf s;
-    s.add(v);
-    return s.dims;
+/// The sizes in a value (lengths of lists, matrix dimensions), in order: an in/out argument must
+/// come back with the sizes it was sent with.
+inline void shapeOf(const json& j, std::vector<long long>& out) {
+    if (j.is_binary()) out.push_back(static_cast<long long>(j.get_binary().size()));
+    if (j.is_array()) out.push_back(static_cast<long long>(j.size()));
+    if (j.is_structured())
+        for (const auto& e : j) shapeOf(e, out);
 }
 
 }  // namespace clothlab::remote
