@@ -312,6 +312,30 @@ TEST(Task3_3_PbdStep, DampsBeforePredicting) {
                                            "it must move with the damped, common velocity 1 m/s";
 }
 
+TEST(Task3_3_PbdStep, DampingActsOnThisStepsForces) {
+    // Two equal particles at rest on the x axis; a force pushes only particle 0 along the axis.
+    // Line (5) gives particle 0 the velocity dt w f; line (6) with k_damping = 1 then leaves only the
+    // rigid motion, which for two particles on a line pushed along it is the common velocity
+    // (momentum conservation: v_cm = dt f / (2 m)). So both particles move by dt^2 f / (2 m).
+    PbdParticles P;
+    P.x = Matrix3X::Zero(3, 2);
+    P.x(0, 1) = 1.0;
+    P.w = VectorX::Ones(2);  // 1 kg each
+    P.v = Matrix3X::Zero(3, 2);
+    P.p = P.x;
+    PbdCallbacks cb;
+    cb.externalForces = [](const Matrix3X&, const Matrix3X&, Matrix3X& f) { f(0, 0) = 10.0; };
+    const double dt = 0.1;
+    pbdStep(P, cb, 1.0, 1, dt);
+    const double common = dt * dt * 10.0 / 2.0;  // m
+    EXPECT_CLOSE(P.x(0, 1), 1.0 + common, 1e-12)
+        << "the x position of particle 1, in m, after one step in which a 10 N force pushed only particle 0 toward it "
+           "(1 kg each, dt = 0.1 s, k_damping = 1): line (6) damps the velocities that line (5) has just changed, so full "
+           "damping shares this step's push between both particles";
+    EXPECT_CLOSE(P.x(0, 0), common, 1e-12) << "the x position of particle 0, in m, after the same step: full damping leaves "
+                                              "only the common velocity of the two particles";
+}
+
 TEST(Task3_3_PbdStep, SwingingChainKeepsItsLinks) {
     // Two links from a pinned particle, released horizontally: a double pendulum whose links the
     // solver iterations keep at their rest lengths, and which never rises above its start.

@@ -284,6 +284,23 @@ TEST(Task5_3_BendingStencils, RestAnglesComeFromTheInitialShape) {
            "must be the dihedral angle of the initial positions (here pi/2)";
 }
 
+TEST(Task5_3_BendingStencils, DegenerateRestShapeGivesAFlatStencil) {
+    // The second triangle has zero area at the start (vertex 3 lies on the edge 0-1). The edge is
+    // still shared by two triangles, and the contract gives such a stencil the rest angle pi (flat):
+    // once the cloth moves the triangle opens, and the edge must resist bending like any other.
+    Matrix3X x(3, 4);
+    x.col(0) = Vec3(0, 0, 0);
+    x.col(1) = Vec3(1, 0, 0);
+    x.col(2) = Vec3(0.5, 1, 0);
+    x.col(3) = Vec3(0.5, 0, 0);
+    const std::vector<Eigen::Vector3i> tris = {Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 0, 3)};
+    const auto st = bendingStencils(tris, x);
+    ASSERT_EQ(st.size(), 1u) << "the number of stencils of two triangles sharing one edge, one of them of zero area at the "
+                                "start: the edge is interior all the same, so it gets its stencil";
+    EXPECT_CLOSE(st[0].phi0, kPi, 1e-12) << "the rest angle phi0, in rad, of a stencil whose rest shape is not valid (a "
+                                            "triangle of zero area): the header's contract for 5.3";
+}
+
 TEST(Task5_3_BendingStencils, FoldedClothStaysAtItsRestAngle) {
     // A 5 x 4 cloth folded by 60 degrees along its middle column.
     ClothSpec spec;

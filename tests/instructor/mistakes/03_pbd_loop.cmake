@@ -38,3 +38,15 @@ clothlab_mistake(inertia_relative_tolerance_large FILE pbd_loop.cpp
   FIND "const double tol = 1e-12 * std::max(1.0, eig.eigenvalues().cwiseAbs().maxCoeff());"
   REPLACE "const double tol = 1e-3 * eig.eigenvalues().cwiseAbs().maxCoeff();"
   WHY "a nearly straight (but not straight) cloth is treated as a line: its spin about the line is damped")
+clothlab_mistake(damping_before_forces FILE pbd_loop.cpp
+  FIND "    P.v += dt * (f * P.w.asDiagonal());                                   // (5)  v += dt w f_ext\n    dampVelocities(P.x, P.v, P.w, kDamping);                              // (6)"
+  REPLACE "    dampVelocities(P.x, P.v, P.w, kDamping);\n    P.v += dt * (f * P.w.asDiagonal());"
+  WHY "damps before the external forces act (lines 5 and 6 swapped): this step's gravity is not damped")
+clothlab_mistake(velocity_update_before_commit FILE pbd_loop.cpp
+  FIND "    P.x = P.p;                                                            // (14)\n    if (cb.velocityUpdate) cb.velocityUpdate(P.x, P.v);                   // (16)"
+  REPLACE "    if (cb.velocityUpdate) cb.velocityUpdate(P.x, P.v);\n    P.x = P.p;"
+  WHY "calls velocityUpdate (16) before x = p (14): it sees the positions of the step's start")
+clothlab_mistake(collisions_from_old_positions FILE pbd_loop.cpp
+  FIND "if (cb.generateCollisionConstraints) cb.generateCollisionConstraints(P.x, P.p);"
+  REPLACE "if (cb.generateCollisionConstraints) cb.generateCollisionConstraints(P.x, P.x);"
+  WHY "generates the collision constraints from x instead of the predicted p (line 8)")

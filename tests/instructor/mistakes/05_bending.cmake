@@ -44,3 +44,9 @@ clothlab_mistake(denominator_unweighted_free FILE bending.cpp
   FIND "w1 * g.q1.squaredNorm() + w2 * g.q2.squaredNorm() + w3 * g.q3.squaredNorm() + w4 * g.q4.squaredNorm();"
   REPLACE "(w1 > 0) * g.q1.squaredNorm() + (w2 > 0) * g.q2.squaredNorm() + (w3 > 0) * g.q3.squaredNorm() + (w4 > 0) * g.q4.squaredNorm();"
   WHY "sum |q_j|^2 over the free particles without their weights w_j: right only when every free particle has w = 1; with other masses one projection over- or undershoots the rest angle")
+clothlab_mistake(degenerate_stencil_rest_angle_zero FILE bending.cpp
+  FIND "s.phi0 = g.valid ? std::atan2(g.sinPhi, g.d) : M_PI;" REPLACE "s.phi0 = g.valid ? std::atan2(g.sinPhi, g.d) : 0.0;"
+  WHY "a stencil whose triangle has zero area at the start gets rest angle 0 (folded) instead of pi (flat)")
+clothlab_mistake(degenerate_stencil_dropped FILE bending.cpp
+  FIND "stencils.push_back(s);" REPLACE "if (g.valid) stencils.push_back(s);"
+  WHY "drops the stencil of a triangle with zero area at the start: that edge never resists bending")
