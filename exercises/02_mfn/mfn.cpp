@@ -4,7 +4,7 @@
 //
 // Replace each `throw NotImplemented(...)` by your code, then run
 //     ./lab grade --stage 02
-// Stuck? `./lab hint 2.1` (or 2.2, ...) reveals the next of three hints per call.
+// Stuck? `./lab hint 2.1` (or 2.2, ...) asks a question and names the slide; add 2 for one sub-step, 3 for the formula.
 #include "clothlab/exercise/02_mfn.h"
 
 #include "clothlab/core/grid.h"

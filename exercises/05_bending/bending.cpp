@@ -4,7 +4,7 @@
 //
 // Replace each `throw NotImplemented(...)` by your code, then run
 //     ./lab grade --stage 05
-// Stuck? `./lab hint 5.1` (or 5.2, ...) reveals the next of three hints per call.
+// Stuck? `./lab hint 5.1` (or 5.2, ...) asks a question and names the slide; add 2 for one sub-step, 3 for the formula.
 #include <algorithm>
 #include <cmath>
 #include <map>

@@ -1,9 +1,8 @@
-// `clothlab hint N.M`: progressive hints for task N.M, one level more per call.
+// `clothlab hint N.M [LEVEL]`: the hints of task N.M up to LEVEL (default 1).
 //
-// exercises/NN_name/hints.json holds three levels per task: (1) the physical requirement and where
-// it is on the slides, (2) the formula, (3) a pseudocode outline. The levels taken are recorded in
-// exercises/NN_name/hints_taken.json ({"N.M": level}); that file travels with the submission and
-// the grader reports it beside the points (what it means is the instructor's call).
+// exercises/NN_name/hints.json holds three levels per task: (1) a guiding question that names the
+// slide to look at, (2) one sub-step, (3) the formula. Hints are free help: the command only reads
+// hints.json and prints; it writes no file and keeps no record.
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -28,7 +27,10 @@ json readJson(const fs::path& file) {
     return j;
 }
 
-void showHint(const std::string& task, const fs::path& exercises, bool peek) {
+// What each of the three levels is (exercises/NN_name/hints.json keeps this order).
+const char* const kLevelMeaning[] = {"a question and the slide to look at", "one sub-step", "the formula"};
+
+void showHint(const std::string& task, const std::string& level_arg, const fs::path& exercises) {
     const auto digit = [&](size_t i, char lo) { return i < task.size() && task[i] >= lo && task[i] <= '9'; };
     const bool wellFormed =  // N.M: N in 1-9, M in 1-99
         (task.size() == 3 || (task.size() == 4 && digit(3, '0'))) && digit(0, '1') && task[1] == '.' && digit(2, '1');
@@ -39,7 +41,7 @@ void showHint(const std::string& task, const fs::path& exercises, bool peek) {
         for (const auto& e : fs::directory_iterator(exercises))
             if (e.is_directory() && e.path().filename().string().rfind(nn + "_", 0) == 0) stage = e.path();
     if (stage.empty()) throw InputError(exercises.string(), "(folder)", "no stage " + nn + "_* for task " + task);
-    const fs::path file = stage / "hints.json", taken_file = stage / "hints_taken.json";
+    const fs::path file = stage / "hints.json";
     const json hints = readJson(file);
     if (!hints.contains(task)) {
         std::string tasks;
@@ -51,37 +53,31 @@ void showHint(const std::string& task, const fs::path& exercises, bool peek) {
         throw InputError(file.string(), task, "must be a list of hint levels");
     for (const auto& l : levels)
         if (!l.is_string()) throw InputError(file.string(), task, "every hint level must be a string");
-    json taken = fs::exists(taken_file) ? readJson(taken_file) : json::object();
-    const int before = taken.contains(task) && taken[task].is_number_integer() ? taken[task].get<int>() : 0;
     const int n = static_cast<int>(levels.size());
-    const int shown = std::min(n, peek ? std::max(before, 0) : before + 1);
-    if (shown == 0) {
-        std::cout << "task " << task << ": no hint taken yet (./lab hint " << task << " shows level 1 of " << n << ")\n";
-        return;
-    }
-    for (int i = 0; i < shown; ++i) std::cout << "hint " << task << ", level " << i + 1 << " of " << n << ":\n  " << levels[i].get<std::string>() << "\n\n";
-    if (!peek && shown > before) {
-        taken[task] = shown;
-        std::ofstream out(taken_file);
-        out << taken.dump(2) << "\n";
-        if (!out) throw InputError(taken_file.string(), "(file)", "cannot write it");
-    }
-    std::cout << (shown == n ? "that was the last level." : "./lab hint " + task + " again shows the next level.")
-              << " Hints taken are recorded in " << taken_file.string() << " and shown with your grade.\n";
+    const int level = level_arg.size() == 1 && level_arg[0] >= '1' && level_arg[0] <= '9' ? level_arg[0] - '0' : 0;
+    if (level < 1 || level > n)
+        throw InputError("command line", "hint " + task + " " + level_arg, "the level is 1 to " + std::to_string(n));
+    const auto meaning = [&](int i) { return n == 3 ? std::string(" (") + kLevelMeaning[i] + ")" : std::string(); };
+    for (int i = 0; i < level; ++i)
+        std::cout << "hint " << task << ", level " << i + 1 << " of " << n << meaning(i) << ":\n  "
+                  << levels[i].get<std::string>() << "\n\n";
+    if (level < n)
+        std::cout << "more: ./lab hint " << task << " " << level + 1 << meaning(level) << "\n";
 }
 
 }  // namespace
 
 void addHintCommand(CLI::App& app, int& exit_code) {
-    auto* cmd = app.add_subcommand("hint", "Progressive hints for a task: one level more per call");
+    auto* cmd = app.add_subcommand(
+        "hint", "Hints for a task, levels 1 to LEVEL: 1 a question and its slide, 2 one sub-step, 3 the formula");
     auto task = std::make_shared<std::string>();
+    auto level = std::make_shared<std::string>("1");
     auto exercises = std::make_shared<std::string>("exercises");
-    auto peek = std::make_shared<bool>(false);
     cmd->add_option("task", *task, "Task number, e.g. 4.2")->required();
+    cmd->add_option("level", *level, "Show levels 1 to LEVEL (default 1)");
     cmd->add_option("--exercises", *exercises, "The folder with the stages (default: exercises)");
-    cmd->add_flag("--shown", *peek, "Show the levels taken so far, take no new one");
     cmd->callback([=, &exit_code] {
-        showHint(*task, *exercises, *peek);
+        showHint(*task, *level, *exercises);
         exit_code = Ok;
     });
 }

@@ -13,7 +13,8 @@ void addRunCommand(CLI::App& app, int& exit_code);
 /// `study stability|precision|sag SCENE [options]` and `study extremes [options]`
 void addStudyCommand(CLI::App& app, int& exit_code);
 
-/// `hint N.M [--exercises DIR] [--shown]`: progressive hints, recorded in DIR/NN_name/hints_taken.json
+/// `hint N.M [LEVEL] [--exercises DIR]`: the hints of task N.M up to LEVEL (1 a question and its slide,
+/// 2 one sub-step, 3 the formula); reads DIR/NN_name/hints.json, writes nothing
 void addHintCommand(CLI::App& app, int& exit_code);
 
 }  // namespace clothlab::cli

@@ -188,18 +188,28 @@ for m in symplectic_euler pbd; do
 done
 if grep -q 'rms_strain \[1\]' <(head -1 "$tmp/pp/precision.csv"); then ok; else bad "precision.csv header: $(head -1 "$tmp/pp/precision.csv")"; fi
 
-# Hints: one level more per call, recorded in the stage folder; bad task numbers are one error line.
+# Hints are free help: `hint N.M [LEVEL]` shows levels 1 to LEVEL (default 1), the same on every call,
+# writes no file and speaks of no record or count; bad task numbers and levels are one error line.
 mkdir -p "$tmp/ex/04_distance"
-printf '{"4.1": ["level-one text", "level-two text", "level-three text"]}' >"$tmp/ex/04_distance/hints.json"
-for level in 1 2 3 3; do
-  "$exe" hint 4.1 --exercises "$tmp/ex" >"$tmp/out" 2>&1 || bad "hint 4.1: exit $?"
-  grep -q "level $level of 3" "$tmp/out" && ! grep -q "level $((level + 1)) of 3" "$tmp/out" || bad "hint 4.1 call for level $level: $(cat "$tmp/out")"
+printf '{"4.1": ["level-one text?", "level-two text", "level-three text"]}' >"$tmp/ex/04_distance/hints.json"
+for args in "4.1" "4.1" "4.1 2" "4.1 3" "4.1"; do
+  read -r _ level <<<"$args"; level=${level:-1}
+  # shellcheck disable=SC2086
+  "$exe" hint $args --exercises "$tmp/ex" >"$tmp/out" 2>&1 || bad "hint $args: exit $?"
+  cat "$tmp/out" >>"$tmp/hints_all"
+  if grep -q "level $level of 3" "$tmp/out" && [[ $(grep -c '^hint 4.1, level' "$tmp/out") -eq $level ]]; then ok
+  else bad "hint $args should show levels 1 to $level: $(cat "$tmp/out")"; fi
 done
-grep -q '"4.1": 3' "$tmp/ex/04_distance/hints_taken.json" && ok || bad "hints_taken.json does not record 3 levels of 4.1"
-for t in 4.9 x 7.1; do
-  "$exe" hint "$t" --exercises "$tmp/ex" >"$tmp/out" 2>"$tmp/err"; code=$?
+grep -q 'level 1 of 3 (a question and the slide to look at)' "$tmp/hints_all" && grep -q '^more: ./lab hint 4.1 2 (one sub-step)' "$tmp/hints_all" \
+  && grep -q 'level 3 of 3 (the formula)' "$tmp/hints_all" && ok || bad "hint should name each level and how to get the next: $(cat "$tmp/hints_all")"
+[[ $(ls "$tmp/ex/04_distance") == hints.json ]] && ok || bad "hint wrote into the stage folder: $(ls "$tmp/ex/04_distance")"
+grep -qiE 'record|taken|count|grade|instructor' "$tmp/hints_all" && bad "hint speaks of a record: $(cat "$tmp/hints_all")" || ok
+for t in 4.9 x 7.1 "4.1 4" "4.1 0" "4.1 two"; do
+  # shellcheck disable=SC2086
+  "$exe" hint $t --exercises "$tmp/ex" >"$tmp/out" 2>"$tmp/err"; code=$?
   [[ $code -eq 1 && $(grep -c '^error: ' "$tmp/err") -eq 1 ]] && ok || bad "hint $t: exit $code, $(cat "$tmp/err")"
 done
+"$exe" hint 4.1 --shown --exercises "$tmp/ex" >/dev/null 2>&1 && bad "hint --shown (levels taken) still accepted" || ok
 
 echo "cli checks: $pass ok, $fail failing"
 [[ $fail -eq 0 ]]
