@@ -80,8 +80,8 @@ void symplecticEulerStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const Force
 ///     v^{n+1} = v^n + \tfrac{\Delta t}{2}\,\big(a^n + a^{n+1}\big) \f]
 /// (Taylor to second order for x, the trapezoidal rule for v). Write it so that the force is evaluated
 /// exactly twice per step, at the old positions and at the new ones. Convention for velocity-dependent
-/// forces (damping): the second evaluation receives the velocity after the first half of the velocity
-/// change, \f$ v^n + \tfrac{\Delta t}{2}\,a^n \f$ (the method is then first order).
+/// forces (damping): the second evaluation receives the velocity that already contains the \f$a^n\f$ half of
+/// the velocity change above and not yet the \f$a^{n+1}\f$ half (the method is then first order).
 /// Second order (halving Δt quarters the error), energy bounded; pinned particles as in explicitEulerStep().
 /// @param x, v, w, force, dt  as in explicitEulerStep()
 void velocityVerletStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt);
