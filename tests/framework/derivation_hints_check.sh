@@ -51,22 +51,23 @@ EOF
 SLIDE="(?i)\bslides?\s+([0-9]|'|‘)"
 
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-# normalise FILE: the text as one line, in the plain notation the keys are written in.
-normalise() {
-  perl -CSD -Mutf8 -0777 -pe 's/\*\*//g; tr/₀₁₂₃₄₅₆₇₈₉ᵢⱼₕₛ/0123456789ijhs/; s/²/^2/g; s/ⁿ/^n/g; s/½/1\/2/g;
-                      s/−/-/g; s/·/*/g; s/×/ x /g; s/\s+/ /g' "$1"
-}
+printf '%s\n' "$KEYS" >"$work/keys"
 # hint_levels FILE FIRST LAST: the hints of levels FIRST..LAST, one per line, as TASK<TAB>TEXT.
 hint_levels() { jq -r --argjson a "$2" --argjson b "$3" 'to_entries[] | .key as $k | .value[$a - 1:$b][] | "\($k)\t\(.)"' "$1"; }
-# gives_away LABEL FILE [KEYS]: one line per key expression (default: all) found in FILE; status 1 if any.
+# gives_away LABEL FILE [KEYFILE]: one line per key expression (default: all) found in FILE, after
+# normalising its text to the plain notation of the keys; status 1 if any.
 gives_away() {
-  local text task re hit bad=0 keys=${3:-$KEYS}
-  text=$(normalise "$2")
-  while IFS=$'\t' read -r task re; do
-    hit=$(grep -oP -- "$re" <<<"$text") || continue
-    echo "$1: prints the answer of derivation task $task ('${hit%%$'\n'*}', key /$re/)"; bad=1
-  done <<<"$keys"
-  return $bad
+  perl -CSD -Mutf8 -e '
+    my ($label, $file, $keys) = @ARGV;
+    local $/; open(my $f, "<", $file) or die "$file: $!"; my $t = <$f>;
+    $t =~ s/\*\*//g; $t =~ tr/₀₁₂₃₄₅₆₇₈₉ᵢⱼₕₛ/0123456789ijhs/; $t =~ s/²/^2/g; $t =~ s/ⁿ/^n/g; $t =~ s/½/1\/2/g;
+    $t =~ s/−/-/g; $t =~ s/·/*/g; $t =~ s/×/ x /g; $t =~ s/\s+/ /g;
+    open(my $k, "<", $keys) or die "$keys: $!"; my $bad = 0;
+    for (split /\n/, <$k>) {
+      my ($task, $re) = split /\t/, $_, 2;
+      if ($t =~ /$re/) { print "$label: prints the answer of derivation task $task (\x27$&\x27, key /$re/)\n"; $bad = 1 }
+    }
+    exit $bad' "$1" "$2" "${3:-$work/keys}"
 }
 
 # check TREE: one line per violation, status 1 if any.
@@ -91,13 +92,13 @@ check() {
 fail=0
 for task in $(cut -f1 <<<"$KEYS" | sort -u); do
   nn=0${task%%.*}
-  keys=$(grep -F "$task	" <<<"$KEYS")
+  grep -F "$task	" "$work/keys" >"$work/task_keys"
   jq -r --arg t "$task" '.[$t][2] // empty' "$root"/exercises/"$nn"_*/hints.json >"$work/level3"
-  gives_away x "$work/level3" "$keys" >/dev/null \
+  gives_away x "$work/level3" "$work/task_keys" >/dev/null \
     && { echo "FAIL: no key expression of task $task matches its level-3 hint (a stale list, or the formula left level 3)"; fail=1; }
   if [[ -d $root/solutions ]]; then
     sed -E 's://.*$::' "$root"/solutions/"$nn"_*/*.cpp >"$work/reference"
-    gives_away x "$work/reference" "$keys" >/dev/null \
+    gives_away x "$work/reference" "$work/task_keys" >/dev/null \
       && { echo "FAIL: no key expression of task $task matches the reference solutions/${nn}_*/ (update the list in $0)"; fail=1; }
   fi
 done
