@@ -80,7 +80,7 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
   echo "$ref_row,0,0,ok," >>"$book"
 fi
 [[ -f $book ]] || fail "no gradebook"
-# Columns: student,01,...,06,total,max,status,hints_taken. The reference row gives each stage's maximum.
+# Columns: student,01,...,06,total,max,status. The reference row gives each stage's maximum.
 header=$(head -1 "$book")
 ref=$(grep '^reference,' "$book") || fail "no reference row"
 IFS=, read -r -a H <<<"$header"
