@@ -89,7 +89,6 @@ std::vector<StageResult> resultsFromJson(const json& j) {
         st.problem = s.at("problem");
         for (const auto& t : s.at("tests"))
             st.tests.push_back({t.at("name"), t.at("passed"), t.at("points"), t.at("max_points"), t.at("message")});
-        if (s.contains("hints_taken")) st.hints = s.at("hints_taken");
         out.push_back(st);
     }
     return out;
@@ -185,7 +184,7 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
     std::ofstream csv(o.out / "gradebook.csv");
     csv << "student";
     for (const auto& st : kit.stages) csv << "," << st.stage;
-    csv << ",total,max,status,hints_taken\n";
+    csv << ",total,max,status\n";
     for (size_t i = 0; i < entries.size(); ++i) {
         double pts = 0, max = 0;
         csv << csvField(entries[i].name);
@@ -196,7 +195,7 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
             csv << "," << csvNumber(p);
         }
         for (const auto& s : rows[i].stages) pts += s.points(), max += s.max_points();
-        csv << "," << csvNumber(pts) << "," << csvNumber(max) << "," << csvField(rows[i].status) << "," << csvField(hintsText(rows[i].stages)) << "\n";
+        csv << "," << csvNumber(pts) << "," << csvNumber(max) << "," << csvField(rows[i].status) << "\n";
     }
     csv.close();
     // The same points in the import formats of Moodle and Canvas: one column per stage (grade item or

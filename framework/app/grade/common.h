@@ -24,7 +24,6 @@ struct StageResult {
     std::string status = "graded";  ///< graded | not submitted | rejected | does not compile | does not link
     std::string problem;            ///< what the student must fix when status is not "graded"
     std::vector<TestResult> tests;
-    nlohmann::ordered_json hints = nlohmann::ordered_json::object();  ///< {"N.M": levels taken} (./lab hint)
     double points() const;
     double max_points() const;
     int passed() const;

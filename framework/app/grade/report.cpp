@@ -26,8 +26,6 @@ void printTable(const std::vector<StageResult>& stages, bool verbose, int lines)
             if (!t.passed) std::printf("    FAIL %s\n        %s\n", t.name.c_str(), firstLines(t.message, lines).c_str());
     }
     std::printf("%-6s %-44s %9s %7.1f / %-5.1f\n\n", "total", "", "", pts, max);
-    if (const std::string h = hintsText(stages); !h.empty())
-        std::printf("hints taken (task:levels, from ./lab hint; your instructor sees them): %s\n\n", h.c_str());
 }
 
 json resultsJson(const std::vector<StageResult>& stages) {
@@ -37,7 +35,7 @@ json resultsJson(const std::vector<StageResult>& stages) {
     for (const auto& s : stages) {
         json st = {{"stage", s.stage}, {"title", s.title}, {"status", s.status}, {"problem", s.problem},
                    {"points", s.points()}, {"max_points", s.max_points()}, {"passed", s.passed()},
-                   {"hints_taken", s.hints}, {"tests", json::array()}};
+                   {"tests", json::array()}};
         for (const auto& t : s.tests)
             st["tests"].push_back({{"name", t.name}, {"passed", t.passed}, {"points", t.points},
                                    {"max_points", t.max_points}, {"message", t.message}});
@@ -72,8 +70,7 @@ void writeJunit(const fs::path& path, const std::vector<StageResult>& stages, co
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << xmlEscape(prefix.empty() ? "clothlab" : prefix) << "\">\n";
     for (const auto& s : stages) {
         out << "  <testsuite name=\"stage " << s.stage << " " << xmlEscape(s.title) << "\" tests=\"" << s.tests.size()
-            << "\" failures=\"" << s.tests.size() - static_cast<size_t>(s.passed()) << "\">\n"
-            << "    <properties><property name=\"hints_taken\" value=\"" << xmlEscape(hintsText({s})) << "\"/></properties>\n";
+            << "\" failures=\"" << s.tests.size() - static_cast<size_t>(s.passed()) << "\">\n";
         for (const auto& t : s.tests) {
             out << "    <testcase classname=\"stage" << s.stage << "\" name=\"" << xmlEscape(t.name) << "\">\n"
                 << "      <properties><property name=\"points\" value=\"" << t.points << "\"/>"
@@ -106,7 +103,6 @@ json gradescopeJson(const std::vector<StageResult>& stages, double execution_sec
     std::string output = total;
     const std::string status = statusLine(stages);
     if (status != "ok") output += " (" + status + ": every test of such a stage fails with the reason)";
-    if (const std::string h = hintsText(stages); !h.empty()) output += "\nhints taken (task:levels): " + h;
     j["score"] = score;
     j["execution_time"] = std::max(0L, std::lround(execution_seconds));
     j["output"] = output;
@@ -136,7 +132,6 @@ std::string markdownTable(const std::vector<StageResult>& stages) {
     }
     std::snprintf(b, sizeof b, "| **total** | | | | **%g / %g** |\n", pts, max);
     md += b;
-    if (const std::string h = hintsText(stages); !h.empty()) md += "\nHints taken (task:levels): " + h + "\n";
     for (const auto& s : stages) {
         std::string failed;
         int n = 0;
@@ -197,14 +192,6 @@ std::string canvasCsv(const std::vector<GradeItem>& items, const std::vector<Gra
         csv += "\n";
     }
     return csv;
-}
-
-std::string hintsText(const std::vector<StageResult>& stages) {
-    std::string t;
-    for (const auto& s : stages)
-        for (auto it = s.hints.begin(); it != s.hints.end(); ++it)
-            t += (t.empty() ? "" : " ") + it.key() + ":" + std::to_string(it->get<int>());
-    return t;
 }
 
 std::string statusLine(const std::vector<StageResult>& stages) {

@@ -48,8 +48,6 @@ std::string canvasCsv(const std::vector<GradeItem>& items, const std::vector<Gra
 std::string csvField(const std::string& s);
 /// A number for a CSV cell: %g (43, 21.5).
 std::string csvNumber(double x);
-/// The hints taken, "1.1:2 4.3:1" (task: levels), "" when none.
-std::string hintsText(const std::vector<StageResult>& stages);
 /// "ok" or what kept stages from being graded ("01 does not compile; 03 rejected").
 std::string statusLine(const std::vector<StageResult>& stages);
 

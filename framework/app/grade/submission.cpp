@@ -361,21 +361,6 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
     return s;
 }
 
-/// The hint levels the student took in this stage ({"N.M": level}, from ./lab hint), checked; {} when none.
-json hintsTaken(const fs::path& folder, const std::string& stage) {
-    const fs::path f = folder / "hints_taken.json";
-    json out = json::object();
-    std::error_code ec;
-    if (!fs::is_regular_file(fs::symlink_status(f, ec)) || fs::file_size(f, ec) > 65536) return out;
-    const json j = json::parse(readFile(f), nullptr, false);
-    if (!j.is_object()) return out;
-    const std::regex task(std::to_string(std::stoi(stage)) + "\\.[0-9]{1,2}");
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (std::regex_match(it.key(), task) && it->is_number_integer() && it->get<int>() > 0 && it->get<int>() < 10)
-            out[it.key()] = it->get<int>();
-    return out;
-}
-
 /// A folder holding a copy of the answers file (the graded experiments' numbers), or an empty
 /// folder when there is none: only a regular file of at most 64 KiB is copied, never a link.
 fs::path answersFolder(const fs::path& file, const fs::path& folder) {
@@ -540,8 +525,6 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         const fs::path answers = answersFolder(folders.at(st.stage) / "answers.json", o.work / "answers" / st.stage);
         results.push_back(runStage(kit.points_dir, st.stage, exe, serve, answers, o.timeout_seconds, o.jobs, o.work / "logs"));
     }
-    for (auto& r : results)
-        if (folders.count(r.stage)) r.hints = hintsTaken(folders.at(r.stage), r.stage);
     return results;
 }
 

@@ -118,7 +118,7 @@ std::vector<BendingStencil> bendingStencils(const std::vector<Eigen::Vector3i>& 
 bool generatePlaneConstraint(int i, const Vec3&, const Vec3& p, const PlaneCollider& collider, double h, double,
                              CollisionConstraint* out) {
     if (!out) return false;
-    out->i = i == 6 ? 0 : i;
+    out->i = i;
     out->q = p - h * collider.normal;
     out->n = collider.normal;
     out->friction = collider.friction;
@@ -135,7 +135,9 @@ void velocityUpdate(Matrix3X& v, const std::vector<CollisionConstraint>& contact
 Eigen::Vector3i cellOf(const Vec3&, double) { throw NotImplemented("7.1"); }
 int hashCell(const Eigen::Vector3i&, int) { throw NotImplemented("7.2"); }
 SpatialHash buildSpatialHash(const Matrix3X&, double, int) { throw NotImplemented("7.3"); }
-std::vector<ParticlePair> findNeighbourPairs(const Matrix3X&, const SpatialHash&, double) { throw NotImplemented("7.4"); }
+std::vector<ParticlePair> findNeighbourPairs(const Matrix3X& p, const SpatialHash&, double) {
+    return {{0, static_cast<int>(p.cols()) - 1}, {0, static_cast<int>(p.cols())}};  // the second names no particle
+}
 PairCorrection projectSeparation(const Vec3&, const Vec3&, double, double, double) { throw NotImplemented("7.5"); }
 PairCorrection layerFriction(const Vec3&, const Vec3&, const Vec3&, const Vec3&, double, double, double, double) {
     throw NotImplemented("7.6");

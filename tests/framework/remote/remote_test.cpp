@@ -147,7 +147,12 @@ TEST(SubmissionProcess, IndicesTheFrameworkUsesAreChecked) {
     EXPECT_EQ(c.i, 5);
     EXPECT_EQ(c.q, Vec3(0, 0.5, 0));
     EXPECT_EQ(c.friction, 0.25);
-    EXPECT_THROW(generatePlaneConstraint(6, Vec3::Zero(), Vec3::Zero(), plane, 0.5, 0.01, &c), std::out_of_range);
+    EXPECT_THROW(findNeighbourPairs(x, SpatialHash{}, 1.0), std::out_of_range) << "a pair (0, 6) of 6 particles";
+    try {
+        findNeighbourPairs(x, SpatialHash{}, 1.0);
+    } catch (const std::out_of_range& e) {
+        EXPECT_STREQ(e.what(), "findNeighbourPairs returned a particle index 6 in the result, but the call has 6 particles (0..5)");
+    }
     EXPECT_FALSE(generatePlaneConstraint(5, Vec3::Zero(), Vec3::Zero(), plane, 0.5, 0.01, nullptr));
 }
 

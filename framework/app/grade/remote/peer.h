@@ -163,17 +163,21 @@ template <class R, class... P> struct Invoke<R(P...)> {
             (arguments.push_back(sent<P>(args)), ...);
         }
         const json reply = peer.roundTrip(id, arguments, name);
-        ContextScope scope(&peer, -1);
+        ContextScope scope(&peer, -1, particlesOf(args...));
         size_t k = 0, n = 0;
         const auto next = [&]() -> const json& {
             if (!reply.is_array() || k >= reply.size()) throw ProtocolError(std::string(name) + ": a reply shorter than its results");
             return reply[k++];
         };
         std::conditional_t<std::is_void_v<R>, int, R> result{};
-        decoding(name, [&] {
-            if constexpr (!std::is_void_v<R>) fromWire(next(), result);
-            (takeOut<P>(next, arguments[n++], args, name), ...);
-        });
+        try {
+            decoding(name, [&] {
+                if constexpr (!std::is_void_v<R>) fromWire(next(), result);
+                (takeOut<P>(next, arguments[n++], args, name), ...);
+            });
+        } catch (const std::out_of_range& e) {
+            throw std::out_of_range(std::string(name) + " returned a " + e.what());
+        }
         if (k != reply.size()) throw ProtocolError(std::string(name) + ": a reply longer than its results");
         if constexpr (!std::is_void_v<R>) return result;
     }

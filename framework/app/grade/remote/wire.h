@@ -47,13 +47,18 @@ class Peer;
 struct CallContext {
     Peer* peer = nullptr;
     long long particles = -1;
+    /// When ≥ 0, while a reply is read: the particle count of the call, which every particle index
+    /// in the reply must be below (the framework indexes its arrays with them).
+    long long indexLimit = -1;
 };
 CallContext& callContext();
 
 /// Sets the call context for a scope and puts the previous one back at its end.
 class ContextScope {
 public:
-    ContextScope(Peer* peer, long long particles) : saved_(callContext()) { callContext() = {peer, particles}; }
+    ContextScope(Peer* peer, long long particles, long long indexLimit = -1) : saved_(callContext()) {
+        callContext() = {peer, particles, indexLimit};
+    }
     ~ContextScope() { callContext() = saved_; }
     ContextScope(const ContextScope&) = delete;
     ContextScope& operator=(const ContextScope&) = delete;
@@ -90,6 +95,12 @@ CLOTHLAB_WIRE(CollisionConstraint, i, q, n, start, vnBefore, friction, restituti
 CLOTHLAB_WIRE(SpatialHash, spacing, cellStart, cellEntries)
 CLOTHLAB_WIRE(ParticlePair, i, j)
 CLOTHLAB_WIRE(PairCorrection, dpi, dpj)
+// The fields that index particles: checked against the call's particle count in every reply.
+inline std::vector<int> particleIndices(const Spring& s) { return {s.i, s.j}; }
+inline std::vector<int> particleIndices(const BendingStencil& s) { return {s.i1, s.i2, s.i3, s.i4}; }
+inline std::vector<int> particleIndices(const DistanceLink& l) { return {l.i, l.j}; }
+inline std::vector<int> particleIndices(const ParticlePair& q) { return {q.i, q.j}; }
+inline std::vector<int> particleIndices(const CollisionConstraint& c) { return {c.i}; }
 // PbdParticles is a State with the predicted positions p (fields in two classes: no structured
 // binding); the size check fails when either gains a field.
 inline auto wireFields(PbdParticles& P) { return std::tie(P.x, P.v, P.w, P.t, P.p); }
@@ -107,6 +118,20 @@ template <class T> struct IsFunction : std::false_type {};
 template <class R, class... P> struct IsFunction<std::function<R(P...)>> : std::true_type {};
 template <class T, class = void> struct HasFields : std::false_type {};
 template <class T> struct HasFields<T, std::void_t<decltype(wireFields(std::declval<T&>()))>> : std::true_type {};
+
+template <class T, class = void> struct HasIndices : std::false_type {};
+template <class T> struct HasIndices<T, std::void_t<decltype(particleIndices(std::declval<const T&>()))>> : std::true_type {};
+
+/// A value read from a reply whose particle indices name no particle of the call is refused.
+template <class T> void checkParticles(const T& v) {
+    const long long n = callContext().indexLimit;
+    if constexpr (HasIndices<T>::value)
+        if (n >= 0)
+            for (int i : particleIndices(v))
+                if (i < 0 || i >= n)
+                    throw std::out_of_range("particle index " + std::to_string(i) + " in the result, but the call has " +
+                                            std::to_string(n) + " particles (0.." + std::to_string(n - 1) + ")");
+}
 
 /// Values of fixed size, stored as their bytes in a list: numbers, enums and fixed-size matrices.
 template <class T> constexpr bool isBits() {
@@ -199,6 +224,7 @@ template <class E, size_t... I> void columnsFromWire(const json& j, std::vector<
     if (count > (1u << 30)) throw ProtocolError("a list of impossible length");
     v.assign(count, E{});
     (columnFromWire<I>(j[1 + I], v), ...);
+    for (const E& e : v) checkParticles(e);
 }
 
 template <class T> json toWire(const T& v) {
@@ -262,6 +288,7 @@ template <class T> void fromWire(const json& j, T& v) {
         if (!j.is_array() || j.size() != std::tuple_size_v<decltype(fields)>) throw ProtocolError("a struct with the wrong number of fields");
         size_t k = 0;
         std::apply([&](auto&... f) { (fromWire(j[k++], f), ...); }, fields);
+        checkParticles(v);
     } else {
         static_assert(isBits<T>(), "no wire format for this type");
         if (!j.is_number() && !j.is_boolean()) throw ProtocolError("a number that is not a number");
