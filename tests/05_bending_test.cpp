@@ -269,15 +269,22 @@ TEST(Task5_3_BendingStencils, OneStencilPerInteriorEdge) {
     }
 }
 
+namespace {
+/// Two triangles (0, 1, 2) and (1, 0, 3) hinged on the edge 0-1, the fourth vertex at p3.
+Matrix3X hinge(const Vec3& p3) {
+    Matrix3X x(3, 4);
+    x << 0, 1, 0.5, p3.x(),  //
+        0, 0, 1, p3.y(),     //
+        0, 0, 0, p3.z();
+    return x;
+}
+const std::vector<Eigen::Vector3i> kHingeTriangles = {Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 0, 3)};
+}  // namespace
+
 TEST(Task5_3_BendingStencils, RestAnglesComeFromTheInitialShape) {
     // Two triangles folded by 90 degrees about the edge 0-1.
-    Matrix3X x(3, 4);
-    x.col(0) = Vec3(0, 0, 0);
-    x.col(1) = Vec3(1, 0, 0);
-    x.col(2) = Vec3(0.5, 1, 0);
-    x.col(3) = Vec3(0.5, 0, 1);
-    const std::vector<Eigen::Vector3i> tris = {Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 0, 3)};
-    const auto st = bendingStencils(tris, x);
+    const Matrix3X x = hinge(Vec3(0.5, 0, 1));
+    const auto st = bendingStencils(kHingeTriangles, x);
     ASSERT_EQ(st.size(), 1u) << "the number of stencils of two triangles sharing one edge: one hinge, one stencil";
     EXPECT_CLOSE(st[0].phi0, angleOf(x.col(0), x.col(1), x.col(2), x.col(3)), 1e-12)
         << "the rest angle phi0 of two triangles folded by 90 degrees, in rad: the cloth rests in its initial shape, so phi0 "
@@ -288,13 +295,7 @@ TEST(Task5_3_BendingStencils, DegenerateRestShapeGivesAFlatStencil) {
     // The second triangle has zero area at the start (vertex 3 lies on the edge 0-1). The edge is
     // still shared by two triangles, and the contract gives such a stencil the rest angle pi (flat):
     // once the cloth moves the triangle opens, and the edge must resist bending like any other.
-    Matrix3X x(3, 4);
-    x.col(0) = Vec3(0, 0, 0);
-    x.col(1) = Vec3(1, 0, 0);
-    x.col(2) = Vec3(0.5, 1, 0);
-    x.col(3) = Vec3(0.5, 0, 0);
-    const std::vector<Eigen::Vector3i> tris = {Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 0, 3)};
-    const auto st = bendingStencils(tris, x);
+    const auto st = bendingStencils(kHingeTriangles, hinge(Vec3(0.5, 0, 0)));
     ASSERT_EQ(st.size(), 1u) << "the number of stencils of two triangles sharing one edge, one of them of zero area at the "
                                 "start: the edge is interior all the same, so it gets its stencil";
     EXPECT_CLOSE(st[0].phi0, kPi, 1e-12) << "the rest angle phi0, in rad, of a stencil whose rest shape is not valid (a "
