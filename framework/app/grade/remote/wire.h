@@ -97,7 +97,7 @@ CLOTHLAB_WIRE(ParticlePair, i, j)
 CLOTHLAB_WIRE(PairCorrection, dpi, dpj)
 // The fields that index particles: checked against the call's particle count in every reply.
 inline std::vector<int> particleIndices(const Spring& s) { return {s.i, s.j}; }
-inline std::vector<int> particleIndices(const BendingStencil& s) { return {s.i1, s.i2, s.i3, s.i4}; }
+inline std::vector<int> particleIndices(const BendingStencil& b) { return {b.i1, b.i2, b.i3, b.i4}; }
 inline std::vector<int> particleIndices(const DistanceLink& l) { return {l.i, l.j}; }
 inline std::vector<int> particleIndices(const ParticlePair& q) { return {q.i, q.j}; }
 inline std::vector<int> particleIndices(const CollisionConstraint& c) { return {c.i}; }
