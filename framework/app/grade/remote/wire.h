@@ -7,6 +7,7 @@
 // CBOR byte strings, one per field (a step's thousands of springs in a few memcpy()s, not a JSON
 // value per spring). std::function crosses as a callback id the other side calls back.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -96,11 +97,12 @@ CLOTHLAB_WIRE(SpatialHash, spacing, cellStart, cellEntries)
 CLOTHLAB_WIRE(ParticlePair, i, j)
 CLOTHLAB_WIRE(PairCorrection, dpi, dpj)
 // The fields that index particles: checked against the call's particle count in every reply.
-inline std::vector<int> particleIndices(const Spring& s) { return {s.i, s.j}; }
-inline std::vector<int> particleIndices(const BendingStencil& b) { return {b.i1, b.i2, b.i3, b.i4}; }
-inline std::vector<int> particleIndices(const DistanceLink& l) { return {l.i, l.j}; }
-inline std::vector<int> particleIndices(const ParticlePair& q) { return {q.i, q.j}; }
-inline std::vector<int> particleIndices(const CollisionConstraint& c) { return {c.i}; }
+// (An array, not a vector: a step's thousands of pairs are checked without allocating.)
+inline std::array<int, 2> particleIndices(const Spring& s) { return {s.i, s.j}; }
+inline std::array<int, 4> particleIndices(const BendingStencil& b) { return {b.i1, b.i2, b.i3, b.i4}; }
+inline std::array<int, 2> particleIndices(const DistanceLink& l) { return {l.i, l.j}; }
+inline std::array<int, 2> particleIndices(const ParticlePair& q) { return {q.i, q.j}; }
+inline std::array<int, 1> particleIndices(const CollisionConstraint& c) { return {c.i}; }
 // PbdParticles is a State with the predicted positions p (fields in two classes: no structured
 // binding); the size check fails when either gains a field.
 inline auto wireFields(PbdParticles& P) { return std::tie(P.x, P.v, P.w, P.t, P.p); }
