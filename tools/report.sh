@@ -28,6 +28,7 @@ while (($#)); do
 done
 [[ -n $stage ]] || die "report: which stage? ($usage)"
 BUILD=${BUILD:-$ROOT/build}
+[[ -d $BUILD ]] && BUILD=$(cd "$BUILD" && pwd)  # the figures run in ROOT
 stages=$(cd "$ROOT/exercises" 2>/dev/null && ls -d [0-9][0-9]_* 2>/dev/null | cut -c1-2 | paste -sd ' ')
 [[ $stage =~ ^[0-9]{1,2}$ ]] || die "report: '$stage' is not a stage number (the stages: ${stages:-none})"
 nn=$(printf '%02d' $((10#$stage)))
@@ -247,7 +248,7 @@ empty=$(awk '/^#+ / { if (h != "" && !body) print h; h = $0; body = 0; next }
              /[^[:space:]]/ { body = 1 } END { if (h != "" && !body) print h }' "$work/writeup.md" \
         | grep -v -E '^(# |## Questions to think about$)' | sed 's/^#* //' | cut -c1-60 | awk '{ printf "%s%s", (NR > 1 ? "; " : ""), $0 }')
 [[ -z $empty ]] || say "note: $ex/writeup.md: no answer yet under: $empty"
-body=$(pandoc -f markdown-raw_html -t html --mathml --shift-heading-level-by=1 "$work/writeup.md" 2>"$work/pandoc.log") \
+body=$(pandoc -f markdown-raw_html -t html --wrap=none --mathml --shift-heading-level-by=1 "$work/writeup.md" 2>"$work/pandoc.log") \
   || die "$ex/writeup.md: (Markdown): pandoc cannot render it: $(head -1 "$work/pandoc.log")"
 
 title=$(head -1 "$ROOT/$ex/README.md" | sed 's/^# *//')
