@@ -55,10 +55,11 @@ problem=$(jq -r '
 [[ -z $problem ]] || die "$ex/answers.json: $problem"
 writeup="$ROOT/$ex/writeup.md"
 [[ -f $writeup ]] || die "$ex/writeup.md: (file): not found; it holds your answers to the sheet's questions (the template: git checkout $ex/writeup.md)"
+((check)) && exit 0
+# (./lab report installs pandoc through ./lab setup first, as root; this says what is missing otherwise)
 for t in pandoc gnuplot base64 perl; do
   command -v $t >/dev/null || die "report: $t is not installed; the report needs it$([[ $t == pandoc ]] && echo " to render writeup.md (Markdown) to HTML"): sudo apt-get install $t"
 done
-((check)) && exit 0
 
 # ---- the build: whose code makes the figures
 clothlab="$BUILD/bin/clothlab"

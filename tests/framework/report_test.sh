@@ -8,7 +8,7 @@
 #     escaped), and no link to any other file. The figures come from this build's command line, which
 #     in the instructor's tree runs solutions/: a finished student's exercises/.
 #  2. Bad input: an unknown stage, broken JSON, a field of the wrong type, a missing answers.json or
-#     writeup.md: each one `error:` line naming the file (and field), exit 1, no HTML written; the same
+#     writeup.md, no pandoc: each one `error:` line naming the file, field or tool, exit 1, no HTML written; the same
 #     through ./lab report for an unknown stage and an unknown option.
 # Writes only into a temporary folder. Usage: report_test.sh SOURCE_DIR BUILD_DIR
 set -u
@@ -81,6 +81,11 @@ bad "no answers.json" 'exercises/01_hooke/answers.json: \(file\): not found' 1
 cp "$tmp/answers.json" "$ex/answers.json"
 mv "$ex/writeup.md" "$tmp/writeup.md"
 bad "no writeup.md" 'exercises/01_hooke/writeup.md: \(file\): not found' 01
+# without pandoc: one line naming it and the package
+mv "$tmp/writeup.md" "$ex/writeup.md"
+mkdir -p "$tmp/bin"
+for t in bash jq sed grep awk ls cut paste head tail rm cat wc dirname gnuplot base64 perl mktemp; do ln -s "$(command -v $t)" "$tmp/bin/$t"; done
+PATH=$tmp/bin bad "no pandoc" 'report: pandoc is not installed; .*: sudo apt-get install pandoc' 01
 # through ./lab (before any build): an unknown stage and an unknown option
 CLOTHLAB_NO_BUILD=1 CLOTHLAB_BUILD=$build "$src/lab" report 42 >"$tmp/lab.log" 2>&1 && fail "./lab report 42 succeeded"
 grep -qx 'error: exercises/42_\*: (folder): there is no stage 42 (the stages: 01 02 03 04 05 06 07)' "$tmp/lab.log" || fail "./lab report 42: $(cat "$tmp/lab.log")"
