@@ -80,7 +80,7 @@ html="$out/$name.html"
 work=$(mktemp -d "${TMPDIR:-/tmp}/clothlab-report.XXXXXX") || die "report: cannot make a temporary folder"
 trap 'rm -rf "$work"' EXIT
 esc() { sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
-figs="$work/figures.html" nfig=0 nfail=0
+figs="$work/figures.html" nfig=0 nfail=0 fail=""
 : >"$figs"
 
 # run SHOWN ARGS...: one command of a figure through this build (cwd: the tree, as ./lab runs it);
@@ -121,7 +121,7 @@ metric() { jq -r ".metrics.$2.value // empty" "$1/summary.json" 2>/dev/null; }
 plot() {
   local png=$1 title=$2 xl=$3 yl=$4 log=$5 s sep="" style="lines lw 2"; shift 5
   for s in "$@"; do [[ -s ${s%%:*} ]] || fail=${fail:-"no data for \"${s#*:}\" (a run it needs failed)"}; done
-  (($# && $(wc -l <"${1%%:*}") < 20)) && style="linespoints lw 2 pt 7"
+  [[ $# -gt 0 && -s ${1%%:*} ]] && (($(wc -l <"${1%%:*}") < 20)) && style="linespoints lw 2 pt 7"
   { echo "set terminal pngcairo size 760,440 font ',10'"; echo "set output '$png'"
     echo "set title \"$title\" noenhanced"; echo "set xlabel \"$xl\" noenhanced"; echo "set ylabel \"$yl\" noenhanced"
     echo "set grid; set key outside right top noenhanced"
@@ -140,8 +140,8 @@ case $nn in
     run "./lab study precision scenes/spring.json --methods symplectic_euler,velocity_verlet" \
       study precision scenes/spring.json --methods symplectic_euler,velocity_verlet --out "$w/p" \
       && sed -n '/^measured order/,/^wrote/p' "$w/last.log" | grep -v '^wrote' >"$w/p.txt"
-    figure "Convergence: error at T = 1 s against the time step" "$w/p/convergence.png" "$w/p.txt"
-    shown=("the study of figure 1")
+    first=$fail; figure "Convergence: error at T = 1 s against the time step" "$w/p/convergence.png" "$w/p.txt"
+    shown=("the study of figure 1") fail=$first
     figure "Work-precision: error against wall time" "$w/p/precision.png"
     set -- ; for m in explicit_euler symplectic_euler velocity_verlet; do
       run "./lab run scenes/spring.json --set solver.method=$m --every 10 --out DIR" \
@@ -177,8 +177,8 @@ case $nn in
       echo "$k $(metric "$w/k$k" max_strain)" >>"$w/k.dat"
     done
     plot "$w/k.png" "Curtain max_strain after 3 s against the stiffness k (summary.json of each run)" "stiffness k [1]" "max_strain [1]" y "$w/k.dat:max_strain"
-    figure "Strain against the stiffness of the distance constraint" "$w/k.png"
-    shown=("the runs of figure 1 at k = 1 and k = 0.9 (--every 5), their report.csv")
+    first=$fail; figure "Strain against the stiffness of the distance constraint" "$w/k.png"
+    shown=("the runs of figure 1 at k = 1 and k = 0.9 (--every 5), their report.csv") fail=$first
     series "$w/k1/report.csv" "t [s]" "max_strain [1]" >"$w/t1.dat" 2>/dev/null; series "$w/k0.9/report.csv" "t [s]" "max_strain [1]" >"$w/t09.dat" 2>/dev/null
     plot "$w/kt.png" "Curtain max_strain against time" "t [s]" "max_strain [1]" "" "$w/t1.dat:k = 1" "$w/t09.dat:k = 0.9"
     figure "Strain against time at k = 1 and k = 0.9" "$w/kt.png" ;;
@@ -191,8 +191,8 @@ case $nn in
       echo "$k $(metric "$w/b$k" rms_bending_error)" >>"$w/b.dat"
     done
     plot "$w/b.png" "Flat flag without wind after 0.5 s: bending error against bending stiffness" "bending stiffness [1]" "rms_bending_error [rad]" x "$w/b.dat:rms_bending_error"
-    figure "Bending error (droop) against the bending stiffness" "$w/b.png"
-    shown=("the runs of figure 1 at bending stiffness 0.02 and 1 (--every 1), their report.csv")
+    first=$fail; figure "Bending error (droop) against the bending stiffness" "$w/b.png"
+    shown=("the runs of figure 1 at bending stiffness 0.02 and 1 (--every 1), their report.csv") fail=$first
     series "$w/b0.02/report.csv" "t [s]" "rms_bending_error [rad]" >"$w/t02.dat" 2>/dev/null; series "$w/b1/report.csv" "t [s]" "rms_bending_error [rad]" >"$w/t1.dat" 2>/dev/null
     plot "$w/bt.png" "Bending error of the drooping flag against time" "t [s]" "rms_bending_error [rad]" "" "$w/t02.dat:stiffness 0.02" "$w/t1.dat:stiffness 1"
     figure "Bending error against time at stiffness 0.02 and 1" "$w/bt.png" ;;

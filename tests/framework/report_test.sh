@@ -6,7 +6,9 @@
 #     of stage 01 has its three figures as PNG data: URIs, each with its command, the answers table
 #     with every number and text, the write-up rendered (formulas as MathML, comments gone, raw HTML
 #     escaped), and no link to any other file. The figures come from this build's command line, which
-#     in the instructor's tree runs solutions/: a finished student's exercises/.
+#     in the instructor's tree runs solutions/: a finished student's exercises/. With a stand-in command
+#     line that stops at `not implemented`, the report is still written and each figure's place says
+#     why; a build that takes the reported stage from the reference is refused.
 #  2. Bad input: an unknown stage, broken JSON, a field of the wrong type, a missing answers.json or
 #     writeup.md, no pandoc: each one `error:` line naming the file, field or tool, exit 1, no HTML written; the same
 #     through ./lab report for an unknown stage and an unknown option.
@@ -56,6 +58,23 @@ else
   fail "no $html"
 fi
 echo "stage-01 report: $((SECONDS - start)) s"
+
+# ---- a student's build whose stage 01 is not done (a stand-in command line that says so): the report
+# is written, each figure's place says why, with a warning; a build that takes stage 01 from the reference
+# is refused (the figures must come from the student's code)
+mkdir -p "$tmp/stub/bin"
+printf '#!/bin/sh\necho "error: not implemented: exercise 1.4 symplecticEulerStep" >&2\nexit 1\n' >"$tmp/stub/bin/clothlab"
+chmod +x "$tmp/stub/bin/clothlab"
+printf 'CLOTHLAB_CODE:STRING=exercises\nCLOTHLAB_REFERENCE_STAGES:STRING=05;06\n' >"$tmp/stub/CMakeCache.txt"
+bash "$src/tools/report.sh" --root "$tree" --build "$tmp/stub" 01 --out "$tmp/stubout" >"$tmp/stub.log" 2>&1 || fail "the report of an unfinished stage failed: $(tail -3 "$tmp/stub.log")"
+[[ $(grep -o 'No figure: [^<]*not implemented: exercise 1.4' "$tmp/stubout/01_hooke.html" 2>/dev/null | wc -l) -eq 3 ]] \
+  && grep -q 'Figures made by your code in exercises/, the reference for stage 05,06' "$tmp/stubout/01_hooke.html" \
+  && [[ $(grep -c '^==> warning: report 01: figure' "$tmp/stub.log") -eq 3 ]] && grep -q '(0 of 3 figures; 3 could not be made' "$tmp/stub.log" \
+  || fail "an unfinished stage's report: $(tail -3 "$tmp/stub.log")"
+sed -i 's/^CLOTHLAB_REFERENCE_STAGES:STRING=.*/CLOTHLAB_REFERENCE_STAGES:STRING=01;02/' "$tmp/stub/CMakeCache.txt"
+bash "$src/tools/report.sh" --root "$tree" --build "$tmp/stub" 01 --out "$tmp/refout" >"$tmp/ref.log" 2>&1 && fail "a report of stage 01 from the reference was made"
+grep -q '^error: report: this build takes stage 01 from the reference' "$tmp/ref.log" && [[ ! -e $tmp/refout/01_hooke.html ]] \
+  || fail "a build with stage 01 from the reference: $(cat "$tmp/ref.log")"
 
 # ---- 2. bad input: one error line naming the file (and field), exit 1, no HTML
 bad() {  # bad WHAT EXPECTED_REGEX ARGS...
