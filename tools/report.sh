@@ -12,7 +12,8 @@
 # Bad input: one line `error: FILE: FIELD: ...` and exit 1. A figure command that fails (e.g. a task
 # not done: `not implemented`) puts its message into the report in place of the figure, with a warning.
 set -uo pipefail
-ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)  # tools/: answers.jq beside this script
+ROOT=$(dirname "$HERE")
 BUILD="" check=0 stage="" out="" usage="usage: ./lab report NN [--out DIR]"
 die() { printf 'error: %s\n' "$*" >&2; exit 1; }
 say() { printf '==> %s\n' "$*" >&2; }
@@ -36,22 +37,12 @@ name=$(cd "$ROOT/exercises" 2>/dev/null && compgen -G "${nn}_*" | head -1) || na
 [[ -n $name ]] || die "exercises/${nn}_*: (folder): there is no stage $nn (the stages: ${stages:-none})"
 ex="exercises/$name"
 
-# ---- the input: answers.json (old {value, how} or new {predict, predicted, measure, measured, explanation})
+# ---- the input: answers.json, in any of its formats (tools/answers.jq)
 answers="$ROOT/$ex/answers.json"
 [[ -f $answers ]] || die "$ex/answers.json: (file): not found; the report shows your experiment numbers from it"
 command -v jq >/dev/null || die "report: jq is not installed (apt-get install jq)"
 msg=$(jq empty "$answers" 2>&1) || die "$ex/answers.json: (JSON): not valid JSON: $(printf '%s' "$msg" | head -1 | sed 's/^jq: error[^:]*: //')"
-problem=$(jq -r '
-  def nums: ["value", "predicted", "measured"]; def texts: ["how", "predict", "measure", "explanation"];
-  if type != "object" then "(file): expected an object of fields, got \(type)"
-  else to_entries[] | .key as $f | .value
-    | if type != "object" then "\($f): expected an object such as {\"value\": null, \"how\": \"...\"}, got \(tojson)"
-      else to_entries[]
-        | if (.key | IN(nums[])) and (.value | type | IN("number", "null") | not) then "\($f).\(.key): expected a number or null, got \(.value | tojson)"
-          elif (.key | IN(texts[])) and (.value | type | IN("string", "null") | not) then "\($f).\(.key): expected text or null, got \(.value | tojson)"
-          else empty end
-      end
-  end' "$answers" | head -1)
+problem=$(jq -r -L "$HERE" 'include "answers"; problems' "$answers" | head -1) || die "$HERE/answers.jq: (file): jq cannot use it"
 [[ -z $problem ]] || die "$ex/answers.json: $problem"
 writeup="$ROOT/$ex/writeup.md"
 [[ -f $writeup ]] || die "$ex/writeup.md: (file): not found; it holds your answers to the sheet's questions (the template: git checkout $ex/writeup.md)"
@@ -227,19 +218,8 @@ esac
 
 # ---- the answers table: every field, with whatever keys it has
 say "report $nn: the answers ($ex/answers.json) and the write-up ($ex/writeup.md)"
-table=$(jq -r '
-  def colname: {"predict": "question (predict)", "predicted": "predicted", "measure": "command (measure)", "measured": "measured",
-              "explanation": "explanation", "value": "value", "how": "how it is measured"}[.] // .;
-  def cell: if . == null then "<td class=\"missing\">not entered</td>" elif type == "number" then "<td class=\"num\">\(.)</td>"
-            elif type == "string" then "<td>\(. | @html)</td>" else "<td><code>\(tojson | @html)</code></td>" end;
-  ([.[] | keys_unsorted[]] | unique) as $all
-  | (["predict", "predicted", "measure", "measured", "explanation", "value", "how"] | map(select(IN($all[])))) as $known
-  | ($known + ($all - $known)) as $cols
-  | if length == 0 then "<p class=\"missing\">answers.json has no fields.</p>" else
-      "<table>\n<tr><th>field</th>" + ($cols | map("<th>\(colname | @html)</th>") | join("")) + "</tr>\n"
-      + (to_entries | map(.value as $v | "<tr><th><code>\(.key | @html)</code></th>" + ($cols | map($v[.] | cell) | join("")) + "</tr>\n") | join(""))
-      + "</table>" end' "$answers") || die "$ex/answers.json: (JSON): cannot read it"
-unset_n=$(jq '[.[] | to_entries[] | select((.key | IN("value", "predicted", "measured")) and .value == null)] | length' "$answers")
+table=$(jq -r -L "$HERE" 'include "answers"; html' "$answers") || die "$ex/answers.json: (JSON): cannot read it"
+unset_n=$(jq -L "$HERE" 'include "answers"; [fields[] | to_entries[] | select((.key | IN(nums[])) and .value == null)] | length' "$answers")
 ((unset_n == 0)) || say "note: $ex/answers.json: $unset_n numbers not entered yet (null)"
 
 # ---- the write-up: comments out, Markdown without raw HTML (nothing active in the file), formulas as MathML

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # ./lab report NN (tools/report.sh): the write-up of a stage as one self-contained HTML file.
 #  1. On a temporary copy of the tree (exercises/ and scenes/; a student's copy holds the student's code
-#     there) with stage 01's answers.json filled in (one field in the new {predict, predicted, measure,
-#     measured, explanation} format, one in the old {value, how}) and a written writeup.md, the report
+#     there) with stage 01's answers.json filled in (one field as {predict, predicted, measure, measured,
+#     explanation}, one as {value, how}; the sections format {predict, measure, explain} below) and a written writeup.md, the report
 #     of stage 01 has its three figures as PNG data: URIs, each with its command, the answers table
 #     with every number and text, the write-up rendered (formulas as MathML, comments gone, raw HTML
 #     escaped), and no link to any other file. The figures come from this build's command line, which
@@ -66,7 +66,15 @@ mkdir -p "$tmp/stub/bin"
 printf '#!/bin/sh\necho "error: not implemented: exercise 1.4 symplecticEulerStep" >&2\nexit 1\n' >"$tmp/stub/bin/clothlab"
 chmod +x "$tmp/stub/bin/clothlab"
 printf 'CLOTHLAB_CODE:STRING=exercises\nCLOTHLAB_REFERENCE_STAGES:STRING=05;06\n' >"$tmp/stub/CMakeCache.txt"
+# (with answers.json in the sections format: predict and measure, each FIELD: {value, what|how}, and explain)
+jq '.predict.symplectic_euler_order.value = 1 | .measure.velocity_verlet_order.value = 1.98 | .explain = "Verlet is MARKER_EXPLAIN <b>"' \
+  "$src/exercises/01_hooke/answers.json" >"$tmp/sections.json" && cp "$ex/answers.json" "$tmp/fields.json" && cp "$tmp/sections.json" "$ex/answers.json"
 bash "$src/tools/report.sh" --root "$tree" --build "$tmp/stub" 01 --out "$tmp/stubout" >"$tmp/stub.log" 2>&1 || fail "the report of an unfinished stage failed: $(tail -3 "$tmp/stub.log")"
+for want in '<h3>Predict (from theory, before running)</h3>' '<h3>Measure (your code, the command in how)</h3>' '<th>what to predict</th>' \
+            '<td class="num">1.98</td>' '<p>Verlet is MARKER_EXPLAIN &lt;b&gt;</p>'; do
+  grep -qF -- "$want" "$tmp/stubout/01_hooke.html" || fail "the sections format: the report lacks $want"
+done
+cp "$tmp/fields.json" "$ex/answers.json"
 [[ $(grep -o 'No figure: [^<]*not implemented: exercise 1.4' "$tmp/stubout/01_hooke.html" 2>/dev/null | wc -l) -eq 3 ]] \
   && grep -q 'Figures made by your code in exercises/, the reference for stage 05,06' "$tmp/stubout/01_hooke.html" \
   && [[ $(grep -c '^==> warning: report 01: figure' "$tmp/stub.log") -eq 3 ]] && grep -q '(0 of 3 figures; 3 could not be made' "$tmp/stub.log" \
@@ -93,8 +101,10 @@ echo '{"symplectic_euler_order": {"value": 1.0,}' >"$ex/answers.json"
 bad "broken answers.json" 'exercises/01_hooke/answers.json: \(JSON\): not valid JSON: .*line 1' 01
 echo '{"symplectic_euler_order": {"measured": "one"}}' >"$ex/answers.json"
 bad "a number that is text" 'exercises/01_hooke/answers.json: symplectic_euler_order.measured: expected a number or null, got "one"' 01
-echo '{"symplectic_euler_order": 1.0}' >"$ex/answers.json"
-bad "a field that is no object" 'exercises/01_hooke/answers.json: symplectic_euler_order: expected an object' 01
+echo '{"predict": {"symplectic_euler_order": {"value": [1]}}, "explain": ""}' >"$ex/answers.json"
+bad "a number that is a list (sections format)" 'exercises/01_hooke/answers.json: predict.symplectic_euler_order.value: expected a number or null, got \[1\]' 01
+echo '{"symplectic_euler_order": [1.0]}' >"$ex/answers.json"
+bad "a field that is a list" 'exercises/01_hooke/answers.json: symplectic_euler_order: expected an object, text or a number, got an array' 01
 rm "$ex/answers.json"
 bad "no answers.json" 'exercises/01_hooke/answers.json: \(file\): not found' 1
 cp "$tmp/answers.json" "$ex/answers.json"
