@@ -559,38 +559,10 @@ TEST(Task1_5_VelocityVerlet, ConservesMomentumAndAngularMomentumWithRandomMasses
     forEachSeed([](unsigned seed) { return conservesMomenta(&velocityVerletStep, "Velocity Verlet", seed, true); });
 }
 
-// ================================ Experiments (answers.json) ==================================
-// The numbers you measured with `./lab study precision` and entered in exercises/01_hooke/answers.json,
-// graded against theory: symplectic Euler is a first-order method (error ~ dt^1), velocity Verlet a
-// second-order one (error ~ dt^2). The test first repeats your study with your own code (same scene,
-// same dt grid) and shows its result beside the theory.
-#include "clothlab/study/precision.h"
-#include "experiment_scenes.h"
-
-namespace {
-// The fitted order of `method` on scenes/spring.json, as `./lab study precision scenes/spring.json` prints
-// it: 7 time steps from scene dt / 10 to scene dt * 10, error at T = 1 s against the analytic solution.
-double studiedOrder(Method method) {
-    const Scene scene = parseScene(kScene_spring, "scenes/spring.json");
-    PrecisionOptions o;
-    o.methods = {method};
-    o.dt_min = scene.solver.dt / 10, o.dt_max = scene.solver.dt * 10, o.dt_count = 7, o.end_time = 1.0;
-    return precisionStudy(scene, o).slopes.at(methodName(method));
-}
-}  // namespace
-
-TEST(Experiments, SymplecticEulerConvergenceOrder) {
-    const double own = studiedOrder(Method::SymplecticEuler);
-    EXPECT_TRUE(testing_util::gradeAnswer("01_hooke", "symplectic_euler_order", 1.0, 0.15,
-                                          "the convergence order p of symplectic Euler, error ~ C dt^p",
-                                          "one step makes a local error O(dt^2), 1/dt steps add up to O(dt): order 1 (± 0.15); "
-                                          "the same study with your code gives " + testing_util::num(own)));
-}
-
-TEST(Experiments, VelocityVerletConvergenceOrder) {
-    const double own = studiedOrder(Method::VelocityVerlet);
-    EXPECT_TRUE(testing_util::gradeAnswer("01_hooke", "velocity_verlet_order", 2.0, 0.15,
-                                          "the convergence order p of velocity Verlet, error ~ C dt^p",
-                                          "Verlet is symmetric in time, so its local error is O(dt^3) and the global one O(dt^2): "
-                                          "order 2 (± 0.15); the same study with your code gives " + testing_util::num(own)));
+// ================================ Experiment (answers.json) ===================================
+// The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
+// explain the difference, in exercises/01_hooke/answers.json. This test checks only that the file is
+// complete and well formed; the numbers are graded by the instructor.
+TEST(Experiments, AnswerFileIsComplete) {
+    EXPECT_TRUE(testing_util::answerFileIsComplete("01_hooke", {"symplectic_euler_order", "velocity_verlet_order"}, {"symplectic_euler_order", "velocity_verlet_order"}));
 }

@@ -504,24 +504,10 @@ TEST(Task2_3_ExternalForces, GravityInAnyDirectionWithRandomMasses) {
     });
 }
 
-// ================================ Experiments (answers.json) ==================================
-// The time step at which the soft cloth of scenes/mfn_hanging.json (structural k = 50 N/m) first blows up
-// with symplectic Euler, measured with `./lab study stability` and entered in exercises/02_mfn/answers.json.
-// Theory: symplectic Euler is stable iff omega_max dt < 2, omega_max the fastest mode of the network
-// (eigenvalues of M^-1 K, computed here by the framework). The test also measures it with your code.
-#include "clothlab/study/stability.h"
-#include "clothlab/study/theory.h"
-#include "experiment_scenes.h"
-
-TEST(Experiments, CriticalTimeStepOfTheSoftCloth) {
-    const Scene scene = parseScene(kScene_mfn_hanging, "scenes/mfn_hanging.json");
-    const double omega = maxAngularFrequency(scene), theory = theoreticalCriticalDt(Method::SymplecticEuler, omega);
-    // shown beside the grade: a bisection between theory / 3 and theory * 3 with your forces
-    StabilityCriteria shortRuns;  // 300 steps per run, not the study's 1000: the grader calls your forces in another process
-    shortRuns.steps = 300;
-    const double own = measureCriticalDt(scene, Method::SymplecticEuler, theory / 3, theory * 3, shortRuns);
-    EXPECT_TRUE(testing_util::gradeAnswer(
-        "02_mfn", "critical_dt_symplectic_euler", theory, 0.1 * theory, "the largest stable time step of symplectic Euler at k = 50 N/m, s",
-        "theory says dt_crit = 2 / omega_max with omega_max = " + testing_util::num(omega) + " rad/s (10 %); the same bisection with "
-        "your code measures " + testing_util::num(own) + " s"));
+// ================================ Experiment (answers.json) ===================================
+// The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
+// explain the difference, in exercises/02_mfn/answers.json. This test checks only that the file is
+// complete and well formed; the numbers are graded by the instructor.
+TEST(Experiments, AnswerFileIsComplete) {
+    EXPECT_TRUE(testing_util::answerFileIsComplete("02_mfn", {"critical_dt"}, {"critical_dt"}));
 }

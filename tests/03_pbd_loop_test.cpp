@@ -521,32 +521,10 @@ TEST(Task3_3_PbdStep, UnevenForcesRandomMassesAndOrientations) {
     });
 }
 
-// ================================ Experiments (answers.json) ==================================
-// How stiff is PBD with few iterations? The largest edge strain of the curtain (scenes/pbd_curtain.json)
-// after its 3 s with 5 and with 50 solver iterations, from `./lab run ... --quiet` (max_strain), entered in
-// exercises/03_pbd_loop/answers.json. The test runs the same scene with your PBD loop (stage 03) and
-// grades your number against that run (3 %); physics also demands that 50 iterations stretch less.
-#include "experiment_scenes.h"
-
-namespace {
-double curtainStrain(int iterations) {
-    return testing_util::finalMetric(kScene_pbd_curtain, "scenes/pbd_curtain.json", {"solver.iterations=" + std::to_string(iterations)},
-                                     "max_strain");
-}
-}  // namespace
-
-TEST(Experiments, CurtainStrainAt5Iterations) {
-    const double own = curtainStrain(5);
-    EXPECT_TRUE(testing_util::gradeAnswer("03_pbd_loop", "max_strain_5_iterations", own, 0.03 * std::abs(own),
-                                          "max_strain of pbd_curtain after 3 s with 5 iterations, a fraction (1)",
-                                          "your PBD loop, run here on the same scene, ends at this strain (3 %)"));
-}
-
-TEST(Experiments, CurtainStrainAt50Iterations) {
-    const double own5 = curtainStrain(5), own = curtainStrain(50);
-    EXPECT_LESS(own, own5) << "the max_strain of pbd_curtain after 3 s with your PBD loop at 50 iterations: more iterations must "
-                              "make the cloth stiffer, so it must stretch less than at 5 iterations (" << own5 << ")";
-    EXPECT_TRUE(testing_util::gradeAnswer("03_pbd_loop", "max_strain_50_iterations", own, 0.03 * std::abs(own),
-                                          "max_strain of pbd_curtain after 3 s with 50 iterations, a fraction (1)",
-                                          "your PBD loop, run here on the same scene, ends at this strain (3 %)"));
+// ================================ Experiment (answers.json) ===================================
+// The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
+// explain the difference, in exercises/03_pbd_loop/answers.json. This test checks only that the file is
+// complete and well formed; the numbers are graded by the instructor.
+TEST(Experiments, AnswerFileIsComplete) {
+    EXPECT_TRUE(testing_util::answerFileIsComplete("03_pbd_loop", {"iteration_stiffness"}, {"max_strain_5_iterations", "max_strain_50_iterations"}));
 }

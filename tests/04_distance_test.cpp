@@ -274,33 +274,10 @@ TEST(Task4_3_ProjectDistance, NearlyCoincidentPointsArePushedApart) {
     });
 }
 
-// ================================ Experiments (answers.json) ==================================
-// What the stiffness k of the distance constraint does: the largest edge strain of the curtain
-// (scenes/pbd_curtain.json, 10 iterations) after 3 s at k = 1 and k = 0.9, from `./lab run ... --quiet`
-// (max_strain), entered in exercises/04_distance/answers.json. The test runs the same scene with your
-// distance constraint and grades your number against that run (3 %); a softer constraint stretches more.
-#include "experiment_scenes.h"
-
-namespace {
-double curtainStrain(const char* stiffness) {
-    return testing_util::finalMetric(kScene_pbd_curtain, "scenes/pbd_curtain.json",
-                                     {std::string("constraints.distance.stiffness=") + stiffness}, "max_strain");
-}
-}  // namespace
-
-TEST(Experiments, CurtainStrainAtStiffness1) {
-    const double own = curtainStrain("1.0");
-    EXPECT_TRUE(testing_util::gradeAnswer("04_distance", "max_strain_stiffness_1", own, 0.03 * std::abs(own),
-                                          "max_strain of pbd_curtain after 3 s at distance stiffness k = 1, a fraction (1)",
-                                          "your distance constraint, run here on the same scene, ends at this strain (3 %)"));
-}
-
-TEST(Experiments, CurtainStrainAtStiffness0_9) {
-    const double stiff = curtainStrain("1.0"), own = curtainStrain("0.9");
-    EXPECT_GREATER(own, stiff) << "the max_strain of pbd_curtain after 3 s with your distance constraint at k = 0.9: a softer "
-                                  "constraint must let the curtain stretch more than at k = 1; max_strain "
-                          << testing_util::num(own) << " at k = 0.9, " << testing_util::num(stiff) << " at k = 1";
-    EXPECT_TRUE(testing_util::gradeAnswer("04_distance", "max_strain_stiffness_0_9", own, 0.03 * std::abs(own),
-                                          "max_strain of pbd_curtain after 3 s at distance stiffness k = 0.9, a fraction (1)",
-                                          "your distance constraint, run here on the same scene, ends at this strain (3 %)"));
+// ================================ Experiment (answers.json) ===================================
+// The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
+// explain the difference, in exercises/04_distance/answers.json. This test checks only that the file is
+// complete and well formed; the numbers are graded by the instructor.
+TEST(Experiments, AnswerFileIsComplete) {
+    EXPECT_TRUE(testing_util::answerFileIsComplete("04_distance", {"light_particle_correction"}, {"max_strain_stiffness_1", "max_strain_stiffness_0_9"}));
 }

@@ -504,35 +504,10 @@ TEST(Task5_2_ProjectBending, RandomStencilsMassesAndScales) {
     });
 }
 
-// ================================ Experiments (answers.json) ==================================
-// What the bending stiffness does: the flag of scenes/pbd_flag.json laid horizontal, without wind, held
-// along its left edge, droops under gravity like a cantilever; its RMS bending-angle error after 0.5 s
-// (50 steps) at bending stiffness 0.02 (the scene's) and 1, from `./lab run ... --quiet`
-// (rms_bending_error, rad), entered in exercises/05_bending/answers.json. The test runs the same scene
-// with your bending constraint and grades your number against that run (5 %); a stiffer constraint bends less.
-#include "experiment_scenes.h"
-
-namespace {
-double droopBendingError(const char* stiffness) {
-    return testing_util::finalMetric(kScene_pbd_flag, "scenes/pbd_flag.json",
-                                     {"forces.wind=[0,0,0]", "cloth.orientation=horizontal", "solver.steps=50",
-                                      std::string("constraints.bending.stiffness=") + stiffness},
-                                     "rms_bending_error");
-}
-}  // namespace
-
-TEST(Experiments, BendingErrorAtStiffness0_02) {
-    const double own = droopBendingError("0.02");
-    EXPECT_TRUE(testing_util::gradeAnswer("05_bending", "rms_bending_error_stiffness_0_02", own, 0.05 * std::abs(own),
-                                          "rms_bending_error of the drooping flag after 0.5 s at bending stiffness 0.02, rad",
-                                          "your bending constraint, run here on the same scene, ends at this error (5 %)"));
-}
-
-TEST(Experiments, BendingErrorAtStiffness1) {
-    const double soft = droopBendingError("0.02"), own = droopBendingError("1.0");
-    EXPECT_LESS(own, soft) << "the rms_bending_error of the drooping flag with your bending constraint at stiffness 1: a stiffer bending constraint (1) must keep the dihedral angles nearer their rest values than 0.02: "
-                         << "rms_bending_error " << testing_util::num(own) << " rad at 1, " << testing_util::num(soft) << " rad at 0.02";
-    EXPECT_TRUE(testing_util::gradeAnswer("05_bending", "rms_bending_error_stiffness_1", own, 0.05 * std::abs(own),
-                                          "rms_bending_error of the drooping flag after 0.5 s at bending stiffness 1, rad",
-                                          "your bending constraint, run here on the same scene, ends at this error (5 %)"));
+// ================================ Experiment (answers.json) ===================================
+// The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
+// explain the difference, in exercises/05_bending/answers.json. This test checks only that the file is
+// complete and well formed; the numbers are graded by the instructor.
+TEST(Experiments, AnswerFileIsComplete) {
+    EXPECT_TRUE(testing_util::answerFileIsComplete("05_bending", {"dihedral_angle"}, {"rms_bending_error_stiffness_0_02", "rms_bending_error_stiffness_1"}));
 }

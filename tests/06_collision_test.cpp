@@ -528,34 +528,10 @@ TEST(Task6_4_CollisionSteps, InclineInAnyOrientationSlidesWithTheAnalyticAcceler
     });
 }
 
-// ================================ Experiments (answers.json) ==================================
-// The rebound height of the small cloth of scenes/pbd_bounce.json (dropped flat from H = 1 m above the
-// contact level, restitution e = 0.5), measured with `./lab run scenes/pbd_bounce.json --every 1` and
-// entered in exercises/06_collision/answers.json. Physics: the impact speed is sqrt(2 g H), it leaves with
-// e times that, so it rises to e^2 H = 0.25 m (5 %). The test also runs the scene with your code.
-#include "experiment_scenes.h"
-#include "clothlab/io/scene_json.h"
-#include "clothlab/sim/simulation.h"
-
-TEST(Experiments, ReboundHeightAtRestitution0_5) {
-    const Scene scene = parseScene(kScene_pbd_bounce, "scenes/pbd_bounce.json");
-    const double e = scene.colliders.at(0).restitution, h = scene.solver.thickness;
-    auto sim = makeSimulation(scene);
-    const double H = sim->state().x.row(1).mean() - h;  // every particle starts at the same height
-    // your code: the highest mean height after the first bounce (the mean starts rising again)
-    double previous = H + h, apex = -INFINITY;
-    bool bounced = false;
-    for (int n = 0; n < scene.solver.steps; ++n) {
-        sim->step();
-        const double y = sim->state().x.row(1).mean();
-        if (!bounced && y > previous) bounced = true;
-        if (bounced && y < previous) break;
-        if (bounced) apex = y - h;
-        previous = y;
-    }
-    EXPECT_TRUE(testing_util::gradeAnswer("06_collision", "rebound_height", e * e * H, 0.05 * e * e * H,
-                                          "the rebound height of the cloth above the contact level (y = h), m",
-                                          "it hits with sqrt(2 g H), leaves with e sqrt(2 g H) and rises to e^2 H = " +
-                                              testing_util::num(e * e * H) + " m (5 %); your code, run here, rises to " +
-                                              (bounced ? testing_util::num(apex) + " m" : std::string("no bounce"))));
+// ================================ Experiment (answers.json) ===================================
+// The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
+// explain the difference, in exercises/06_collision/answers.json. This test checks only that the file is
+// complete and well formed; the numbers are graded by the instructor.
+TEST(Experiments, AnswerFileIsComplete) {
+    EXPECT_TRUE(testing_util::answerFileIsComplete("06_collision", {"rebound_height"}, {"rebound_height"}));
 }

@@ -366,9 +366,13 @@ void selfCollisionStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const Vec3& g
     x = p;
 }
 
+}  // namespace
+
+// Also the instructor's experiment of this stage (tests/instructor/experiments/07_self_collision.cpp).
+namespace stage07 {
 // Two n x n layers of spacing h: the lower one pinned, the upper one dropped from 5 h above it, shifted
-// by half a spacing, so that each of its particles lands on four of the lower layer (a spacing above
-// h sqrt(2) would let it slip through); `steps` steps of dt = 5 ms. Returns the closest distance between
+// by half a spacing, so that each of its particles lands on four of the lower layer; `steps` steps of
+// dt = 5 ms. Returns the closest distance between
 // a particle of the upper layer and one of the lower layer at the end, m.
 double dropLayerOnLayer(int n, double h, int steps, int iterations) {
     const double a = h, dt = 0.005;
@@ -387,7 +391,8 @@ double dropLayerOnLayer(int n, double h, int steps, int iterations) {
         for (int j = n * n; j < 2 * n * n; ++j) closest = std::min(closest, (x.col(i) - x.col(j)).norm());
     return closest;
 }
-}  // namespace
+}  // namespace stage07
+using stage07::dropLayerOnLayer;
 
 TEST(Task7_5_SelfCollisionSteps, AFallingLayerRestsOnTheLowerOne) {
     // After 0.5 s the upper layer rests on the lower one: no particle of one closer than h to one of the
@@ -425,24 +430,10 @@ TEST(Task7_5_SelfCollisionSteps, CollidingCloudsKeepTheirMomentum) {
     });
 }
 
-// ================================ Experiments (answers.json) ==================================
-// The distance between two cloth layers lying on each other at the end of scenes/pbd_self_collision.json,
-// measured with `./lab run scenes/pbd_self_collision.json` (min_pair_distance, the closest two particles
-// that are at least h apart at rest) and entered in exercises/07_self_collision/answers.json. Physics:
-// gravity presses the upper layer onto the lower one; the inequality |p_i - p_j| >= h lets them come
-// no closer than h, and nothing holds them further apart: h, within 10 %.
-#include "experiment_scenes.h"
-#include "clothlab/io/scene_json.h"
-
-TEST(Experiments, LayerDistanceIsTheThickness) {
-    const Scene scene = parseScene(kScene_pbd_self_collision, "scenes/pbd_self_collision.json");
-    const double h = scene.self_collision.thickness;
-    // your code, in a small check of the same physics (the scene itself takes too long to run here):
-    // a layer dropped onto a pinned one, the closest distance between them after 0.5 s
-    const double yours = dropLayerOnLayer(6, h, 100, 10);
-    EXPECT_TRUE(testing_util::gradeAnswer("07_self_collision", "layer_distance", h, 0.1 * h,
-                                          "the closest distance between two particles of the folded cloth that are at least h apart at rest, m",
-                                          "gravity presses the layers together and the separation holds them exactly h = " +
-                                              testing_util::num(h) + " m apart (10 %); in a small check here your code rests a "
-                                              "layer dropped onto another at " + testing_util::num(yours) + " m from it"));
+// ================================ Experiment (answers.json) ===================================
+// The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
+// explain the difference, in exercises/07_self_collision/answers.json. This test checks only that the file is
+// complete and well formed; the numbers are graded by the instructor.
+TEST(Experiments, AnswerFileIsComplete) {
+    EXPECT_TRUE(testing_util::answerFileIsComplete("07_self_collision", {"largest_holding_spacing"}, {"layer_distance"}));
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -152,9 +153,13 @@ inline AssertionResult& operator<<(AssertionResult&& r, const double& v) { retur
 namespace clothlab::testing_util {
 
 // ---- Graded experiments: the student's answers.json ------------------------------------------------
-// Each stage ends with measurements the student enters in exercises/NN_name/answers.json
-// ({"field": {"value": <number or null>, "how": "<the command>"}, ...}). The test computes what physics
-// expects (a formula, or a run of the student's own code) and grades the number within a stated tolerance.
+// Each stage ends with an experiment the student writes up in exercises/NN_name/answers.json:
+//   {"predict": {"<field>": {"value": <number or null>, "what": "<the quantity, from theory>"}, ...},
+//    "measure": {"<field>": {"value": <number or null>, "how": "<the command>"}, ...},
+//    "explain": "<one or two sentences: why the measurement differs from the prediction, or agrees>"}
+// The student's tests (AnswerFileIsComplete) check only that the file is complete and well formed; the
+// numbers are graded by the instructor's tests (tests/instructor/experiments/, not in the student copy),
+// which compute the physics from first principles and rerun the student's own code.
 
 #ifndef CLOTHLAB_ANSWERS_DEFAULT_DIR
 #define CLOTHLAB_ANSWERS_DEFAULT_DIR "exercises"
@@ -178,28 +183,61 @@ inline std::string answersShownAs(const char* stageDir) {
     return answersPath(stageDir);
 }
 
-/// Reads the number the student entered for `field` from answersPath(stageDir) into *value. A missing
-/// or unreadable file, malformed JSON, a missing field or a null (not measured yet) is a failure whose
-/// message names the file and the field; nothing throws.
-inline testing::AssertionResult readAnswer(const char* stageDir, const std::string& field, double* value) {
+/// Reads answersPath(stageDir) into *doc. A missing or unreadable file or malformed JSON is a failure
+/// whose message names the file; nothing throws.
+inline testing::AssertionResult readAnswersFile(const char* stageDir, nlohmann::json* doc) {
     const std::string path = answersShownAs(stageDir);
     std::ifstream in(answersPath(stageDir));
     if (!in)
-        return testing::AssertionFailure() << path << ": cannot read the answers file (the task sheet's \"Experiments\" says what to measure)";
-    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-    if (doc.is_discarded()) return testing::AssertionFailure() << path << ": not valid JSON (check commas, quotes and brackets)";
-    if (!doc.is_object() || !doc.contains(field))
-        return testing::AssertionFailure() << path << ": " << field << ": missing (keep the file's fields as shipped)";
-    const nlohmann::json& entry = doc[field];
-    const nlohmann::json& v = entry.is_object() ? (entry.contains("value") ? entry["value"] : nlohmann::json()) : entry;
+        return testing::AssertionFailure() << path << ": cannot read the answers file (the task sheet's \"Experiment\" says what to enter)";
+    *doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (doc->is_discarded()) return testing::AssertionFailure() << path << ": not valid JSON (check commas, quotes and brackets)";
+    if (!doc->is_object()) return testing::AssertionFailure() << path << ": expected an object with \"predict\", \"measure\" and \"explain\"";
+    return testing::AssertionSuccess();
+}
+
+/// Reads the number the student entered as `section`.`field`.value (section "predict" or "measure")
+/// into *value. A missing field, a null (not entered yet) or a non-number is a failure whose message
+/// names the file and the field; nothing throws.
+inline testing::AssertionResult readAnswer(const char* stageDir, const std::string& section, const std::string& field, double* value) {
+    nlohmann::json doc;
+    if (auto read = readAnswersFile(stageDir, &doc); !read) return read;
+    const std::string path = answersShownAs(stageDir), name = section + "." + field;
+    if (!doc.contains(section) || !doc[section].is_object() || !doc[section].contains(field))
+        return testing::AssertionFailure() << path << ": " << name << ": missing (keep the file's fields as shipped)";
+    const nlohmann::json& entry = doc[section][field];
+    const nlohmann::json v = entry.is_object() && entry.contains("value") ? entry["value"] : nlohmann::json();
     if (v.is_null())
-        return testing::AssertionFailure() << path << ": " << field << ".value: null, not measured yet"
-                                           << (entry.is_object() && entry.contains("how") && entry["how"].is_string()
-                                                   ? " (how: " + entry["how"].get<std::string>() + ")"
-                                                   : std::string());
+        return testing::AssertionFailure() << path << ": " << name << ".value: null, not entered yet"
+                                           << (section == "predict" ? " (a number from theory, before you run anything)"
+                                                                    : " (run the command in its \"how\" on your own code)");
     if (!v.is_number() || !std::isfinite(v.get<double>()))
-        return testing::AssertionFailure() << path << ": " << field << ".value: expected a number (got " << v.dump() << ")";
+        return testing::AssertionFailure() << path << ": " << name << ".value: expected a number (got " << v.dump() << ")";
     *value = v.get<double>();
+    return testing::AssertionSuccess();
+}
+
+/// The student's check of the answers file: every field of `predicts` and `measures` holds a finite
+/// number and "explain" has at least five words. It grades no number: those are graded by the
+/// instructor (the message says so).
+inline testing::AssertionResult answerFileIsComplete(const char* stageDir, const std::vector<std::string>& predicts,
+                                                     const std::vector<std::string>& measures) {
+    double v = 0;
+    for (const auto& f : predicts)
+        if (auto r = readAnswer(stageDir, "predict", f, &v); !r) return r;
+    for (const auto& f : measures)
+        if (auto r = readAnswer(stageDir, "measure", f, &v); !r) return r;
+    nlohmann::json doc;
+    if (auto read = readAnswersFile(stageDir, &doc); !read) return read;
+    const std::string path = answersShownAs(stageDir);
+    if (!doc.contains("explain") || !doc["explain"].is_string())
+        return testing::AssertionFailure() << path << ": explain: missing (one or two sentences: why your measurement differs from your prediction)";
+    std::istringstream words(doc["explain"].get<std::string>());
+    int n = 0;
+    for (std::string w; words >> w;) ++n;
+    if (n < 5)
+        return testing::AssertionFailure() << path << ": explain: " << n << " words; write one or two sentences on why your "
+                                              "measurement differs from your prediction (or agrees with it)";
     return testing::AssertionSuccess();
 }
 
@@ -222,17 +260,42 @@ inline double finalMetric(const char* sceneText, const std::string& file, const 
     throw std::runtime_error(file + ": the run reports no metric " + name);
 }
 
-/// Grades one measured number: the answer in `field` must lie within `tolerance` of `expected`.
-/// `what` names the quantity and its unit, `why` says where the expected value comes from.
-inline testing::AssertionResult gradeAnswer(const char* stageDir, const std::string& field, double expected, double tolerance,
-                                            const std::string& what, const std::string& why) {
+/// Asserts a grade (gradePrediction(), gradeMeasurement()) without quoting its arguments: EXPECT_TRUE
+/// prints the asserted expression ("Value of: ..."), which would show the expected value and tolerance.
+#define EXPECT_GRADED(result)                                          \
+    do {                                                               \
+        const ::testing::AssertionResult graded_ = (result);           \
+        EXPECT_TRUE(graded_);                                          \
+    } while (0)
+
+/// The instructor's grade of a prediction: predict.`field` must lie within `tolerance` of `expected`
+/// (computed by the test from first principles). The message names the field and the student's number,
+/// never the expected value or the tolerance.
+inline testing::AssertionResult gradePrediction(const char* stageDir, const std::string& field, double expected, double tolerance,
+                                                const std::string& what) {
     double answer = 0;
-    const testing::AssertionResult read = readAnswer(stageDir, field, &answer);
-    if (!read) return read;
+    if (auto read = readAnswer(stageDir, "predict", field, &answer); !read) return read;
     if (std::abs(answer - expected) <= tolerance) return testing::AssertionSuccess();
-    const auto [a, e] = numPair(answer, expected);
-    return testing::AssertionFailure() << answersShownAs(stageDir) << ": " << field << " (" << what << "): you entered " << a
-                                       << ", physics expects " << e << " within " << num(tolerance) << ": " << why;
+    return testing::AssertionFailure() << answersShownAs(stageDir) << ": predict." << field << " (" << what << "): " << num(answer)
+                                       << " is not what the theory gives; redo the derivation the task sheet's \"Experiment\" outlines";
+}
+
+/// The instructor's grade of a measurement: measure.`field` must lie within `tolerance` of `rerun`,
+/// the same measurement made by the test with the student's code, and that code must reproduce the
+/// physics (`physics`, the test's first-principles check of the same code, with `physicsWhy` naming
+/// what failed), so a wrong implementation earns no measurement points. No target in the message.
+inline testing::AssertionResult gradeMeasurement(const char* stageDir, const std::string& field, double rerun, double tolerance,
+                                                 const testing::AssertionResult& physics, const std::string& what) {
+    double answer = 0;
+    if (auto read = readAnswer(stageDir, "measure", field, &answer); !read) return read;
+    if (!physics)
+        return testing::AssertionFailure() << answersShownAs(stageDir) << ": measure." << field << " (" << what
+                                           << "): your code does not reproduce the physics here, so its measurement earns no points: "
+                                           << physics.message();
+    if (std::abs(answer - rerun) <= tolerance) return testing::AssertionSuccess();
+    return testing::AssertionFailure() << answersShownAs(stageDir) << ": measure." << field << " (" << what << "): " << num(answer)
+                                       << " does not agree with the same measurement made here with your code; run the command in its "
+                                          "\"how\" again on your final code and copy the number from its output";
 }
 
 // ---- Randomised property tests ----------------------------------------------------------------

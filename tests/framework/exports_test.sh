@@ -54,7 +54,7 @@ for variant in solutions exercises; do
 done
 jq -e --argjson max "$max01" '.score == $max and all(.tests[]; .status == "passed" and .output == "")' "$tmp/solutions.gs.json" >/dev/null \
   || fail "the reference does not score $max01 with every test passed"
-jq -e '.score == 0 and all(.tests[]; .status == "failed" and (.output | contains("not implemented: exercise")))' "$tmp/exercises.gs.json" >/dev/null \
+jq -e '.score == 0 and all(.tests[]; .status == "failed" and (.output | contains("not implemented: exercise") or contains("not entered yet")))' "$tmp/exercises.gs.json" >/dev/null \
   || fail "the stub's tests are not all failed with their message as output"
 grep -q "^| \*\*total\*\* | | | | \*\*$max01 / $max01\*\* |" "$tmp/solutions.md" || fail "the Markdown total is not $max01 / $max01"
 
@@ -79,6 +79,10 @@ mkdir -p "$tmp/class/alice@example.org/01_hooke" "$tmp/class/bob/01_hooke" "$tmp
 cp "$root"/solutions/01_hooke/* "$tmp/class/alice@example.org/01_hooke/"
 cp "$tmp"/sub/01_hooke/*.cpp "$tmp/class/bob/01_hooke/"
 cp "$root"/exercises/01_hooke/*.cpp "$tmp/class/smith, carol/01_hooke/"
+# alice's write-up and her report (./lab report 01) are collected beside the gradebook; a link is not.
+printf '# Write-up\n\nalice explains the energy.\n' >"$tmp/class/alice@example.org/01_hooke/writeup.md"
+mkdir -p "$tmp/class/alice@example.org/out/report" && echo '<html>report 01</html>' >"$tmp/class/alice@example.org/out/report/01_hooke.html"
+ln -s /etc/passwd "$tmp/class/alice@example.org/out/report/02_mfn.html"
 "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --only 01 --jobs 2 >"$tmp/class.log" 2>&1 \
   || { tail "$tmp/class.log"; fail "grading the class"; }
 item="clothlab 01 $title01"
@@ -87,6 +91,11 @@ diff "$tmp/moodle.want" "$tmp/out/moodle.csv" >"$tmp/moodle.diff" || fail "moodl
 printf '%s\n' "Student,ID,SIS User ID,Section,$item" "Points Possible,,,,$max01" "alice@example.org,,alice@example.org,,$max01" \
   "bob,,bob,,0" "\"smith, carol\",,\"smith, carol\",,0" >"$tmp/canvas.want"
 diff "$tmp/canvas.want" "$tmp/out/canvas.csv" >"$tmp/canvas.diff" || fail "canvas.csv: $(cat "$tmp/canvas.diff")"
+w="$tmp/out/writeups/alice@example.org"
+cmp -s "$tmp/class/alice@example.org/01_hooke/writeup.md" "$w/01_hooke/writeup.md" && grep -q 'report 01' "$w/01_hooke.html" \
+  || fail "alice's write-up and report were not collected: $(find "$tmp/out/writeups" | head)"
+[[ ! -e $w/02_mfn.html && ! -e $tmp/out/writeups/bob ]] || fail "writeups/ has a link's target or a student without a write-up: $(find "$tmp/out/writeups")"
+grep -q "write-ups of 1 in writeups/NAME/" "$tmp/class.log" || fail "the class summary does not mention the write-ups: $(tail -1 "$tmp/class.log")"
 # The same points as clothlab's gradebook.csv (student, then stage 01).
 cut -d, -f1-2 "$tmp/out/gradebook.csv" | sed -n 2p | grep -qx "alice@example.org,$max01" || fail "gradebook.csv disagrees: $(head -3 "$tmp/out/gradebook.csv")"
 
@@ -99,4 +108,4 @@ cut -d, -f1-2 "$tmp/out/gradebook.csv" | sed -n 2p | grep -qx "alice@example.org
 grep -qx "error: $tmp/m.md: --markdown: not with --class (the class's gradebooks and feedback go to --out)" "$tmp/bad.log" \
   || fail "--markdown with --class: $(cat "$tmp/bad.log")"
 [[ ! -e $tmp/out2 ]] || fail "--markdown with --class graded before saying no"
-echo "results.json has Gradescope's fields (scores sum, the compiler's message on a broken stage's tests); the Markdown table; moodle.csv and canvas.csv in their import formats; bad output paths are one error line"
+echo "results.json has Gradescope's fields (scores sum, the compiler's message on a broken stage's tests); the Markdown table; moodle.csv and canvas.csv in their import formats; the write-ups collected; bad output paths are one error line"

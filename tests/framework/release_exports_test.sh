@@ -22,8 +22,11 @@ for f in setup.sh run_autograder; do
   head -1 "$tmp/gs/$f" | grep -q '^#!/usr/bin/env bash$' || fail "the bundle's $f has no #! line"
 done
 copy=$tmp/gs/clothlab
-[[ -x $copy/lab && -d $copy/exercises && ! -e $copy/solutions && ! -e $copy/tests/instructor ]] \
-  || fail "the bundle's clothlab/ is not the student copy"
+[[ -x $copy/lab && -d $copy/exercises && ! -e $copy/solutions && $(ls "$copy/tests/instructor") == experiments ]] \
+  || fail "the bundle's clothlab/ is not the student copy with the instructor's experiments (tests/instructor/experiments only)"
+# The bundle grades the experiments' numbers (students never see it): the points of every experiment test.
+jq -e '.tests | has("Experiments.AnswerFileIsComplete") and (keys | map(select(startswith("Experiments."))) | length > 1)' \
+  "$copy/tests/01_hooke.points.json" >/dev/null || fail "the bundle's points files lack the instructor's experiment tests"
 if command -v zip >/dev/null; then
   [[ -f $tmp/gs/autograder.zip ]] || fail "zip is installed but there is no autograder.zip"
   unzip -Z1 "$tmp/gs/autograder.zip" >"$tmp/zip.txt" || fail "autograder.zip does not unzip"

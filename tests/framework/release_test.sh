@@ -21,6 +21,12 @@ CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/copy" >"$tmp/release.log" 2>
 grep -q "reference objects" "$tmp/release.log" || fail "lab release does not report the reference objects: $(tail -2 "$tmp/release.log")"
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
 [[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
+# The experiments' numbers are graded by the instructor: the copy's points files keep only the check
+# that the answers file is complete.
+for f in "$tmp"/copy/tests/[0-9][0-9]_*.points.json; do
+  jq -e '(.tests | keys | map(select(startswith("Experiments."))) == ["Experiments.AnswerFileIsComplete"])' "$f" >/dev/null \
+    || fail "$f in the copy: Experiments entries other than AnswerFileIsComplete: $(jq -c '.tests | keys | map(select(startswith("Experiments.")))' "$f")"
+done
 # Exactly the committed files: nothing untracked, no build output.
 { git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/grade.yml
   git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'
@@ -71,6 +77,7 @@ export CLOTHLAB_BUILD="$tmp/build"
 export CLOTHLAB_BUILD_TYPE=Debug
 ./lab grade --json "$tmp/grade.json" >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the copy"; }
 grep -q '"max_points": [1-9]' "$tmp/grade.json" || fail "grade.json has no points"
+grep -q "graded by the instructor" "$tmp/grade.log" || fail "./lab grade in the copy does not say that the experiments' numbers are graded by the instructor"
 grep -q '"passed": true' "$tmp/grade.json" && fail "the untouched copy passes a graded test: $(grep -B3 '"passed": true' "$tmp/grade.json" | head -4)"
 # The copy's own graded binaries (its stubs): every test fails with "not implemented", through the grader.
 targets=(clothlab)
@@ -82,7 +89,7 @@ for exe in "$CLOTHLAB_BUILD"/bin/grade_*_exercises; do
   specs+=(--stage "$nn=$exe")
 done
 ((${#specs[@]})) || fail "no graded test binaries in the copy"
-"$CLOTHLAB_BUILD/bin/clothlab-grade" --points-dir tests --quiet --expect all-fail --message "not implemented: exercise" "${specs[@]}" \
+"$CLOTHLAB_BUILD/bin/clothlab-grade" --points-dir tests --quiet --expect all-fail --message "not implemented: exercise" --message "not entered yet" "${specs[@]}" \
   || fail "the untouched copy must fail every graded test with 'not implemented'"
 for s in scenes/*.json; do
   "$CLOTHLAB_BUILD/bin/clothlab" run "$s" --steps 5 >"$tmp/run.log" 2>&1

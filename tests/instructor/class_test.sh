@@ -73,7 +73,7 @@ mkdir -p "$class/bob smith"; cp -r "$root/exercises/01_hooke" "$class/bob smith/
 expect_row "bob smith" "02 not submitted; 03 not submitted; 04 not submitted; 05 not submitted; 06 not submitted; 07 not submitted" $(zero_all)
 reference "$class/bob_smith"; expect_row bob_smith ok
 # The reference with stage 01's answers not measured yet (null): its experiments fail, naming the file.
-reference "$class/ref_no_answers"; jq 'map_values(.value = null)' "$root/solutions/01_hooke/answers.json" >"$class/ref_no_answers/01_hooke/answers.json"
+reference "$class/ref_no_answers"; jq '(.predict, .measure) |= map_values(.value = null)' "$root/solutions/01_hooke/answers.json" >"$class/ref_no_answers/01_hooke/answers.json"
 expect_row ref_no_answers ok "01=$(jq '[.tests | to_entries[] | select(.key | startswith("Experiments.") | not) | .value] | add' "$root/tests/01_hooke.points.json")"
 if [[ $size == full ]]; then
   for i in 1 2 3 4 5 6 7; do reference "$class/ref_student$i"; expect_row "ref_student$i" ok; done
@@ -127,7 +127,7 @@ done <"$book"
 (($(ls "$tmp/out/feedback" | wc -l) == n && $(ls "$tmp/out/junit" | wc -l) == n)) || { echo "not one feedback JSON and one JUnit file per student"; bad=1; }
 ((bad == 0)) || { cat "$book"; fail "the gradebook is wrong (lines above)"; }
 # An experiment's message names the answers file as the student knows it, not the sandbox's copy.
-grep -q 'exercises/01_hooke/answers.json: [a-z_]*.value: null, not measured yet' "$tmp/out/feedback/ref_no_answers.json" \
+grep -qE 'exercises/01_hooke/answers.json: (predict|measure)[.][a-z_]*[.]value: null, not entered yet' "$tmp/out/feedback/ref_no_answers.json" \
   && ! grep -q '/grade/answers' "$tmp/out/feedback/ref_no_answers.json" \
   || fail "ref_no_answers's feedback does not name exercises/01_hooke/answers.json (or names the sandbox path)"
 # The LMS imports (docs/grading.md "Exports") carry the same points per stage: moodle.csv is the

@@ -77,6 +77,26 @@ void unpack(const Entry& e, const fs::path& to, const fs::path& log) {
                                  firstLines(readFile(log, 4096), 2, " ") + ")");
 }
 
+/// Copies a submission's write-ups (NN_name/writeup.md, and a report NN_name.html committed under
+/// out/report/ or report/) into `to` (NN_name/writeup.md, NN_name.html): regular files only, no
+/// links, up to 16 MiB each. Returns how many it copied.
+int collectWriteups(const fs::path& root, const fs::path& to) {
+    std::error_code ec;
+    fs::remove_all(to, ec);
+    int n = 0;
+    for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
+        if (it->is_symlink(ec) || !it->is_regular_file(ec) || it->file_size(ec) > (16u << 20)) continue;
+        const std::string file = it->path().filename().string(), dir = it->path().parent_path().filename().string();
+        const bool writeup = file == "writeup.md" && std::regex_match(dir, std::regex("[0-9][0-9]_.+"));
+        if (!writeup && !(dir == "report" && std::regex_match(file, std::regex("[0-9][0-9]_.+\\.html")))) continue;
+        const fs::path dest = to / (writeup ? dir : "") / file;
+        std::error_code copied;
+        fs::create_directories(dest.parent_path(), copied);
+        n += fs::copy_file(it->path(), dest, fs::copy_options::overwrite_existing, copied) && !copied;
+    }
+    return n;
+}
+
 }  // namespace
 
 std::vector<StageResult> resultsFromJson(const json& j) {
@@ -110,7 +130,7 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
     };
     std::vector<Row> rows(entries.size());
     std::mutex print;
-    int done = 0;
+    int done = 0, with_writeups = 0;
     const bool tty = ::isatty(2);
     const std::string salt = kit.fingerprint + (o.grade.use_reference ? "ref" : "own");
     parallelFor(static_cast<int>(entries.size()), o.jobs, [&](int i) {
@@ -167,10 +187,12 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
         fb["status"] = row.status;
         writeFile(o.out / "feedback" / (name + ".json"), fb.dump(2) + "\n");
         writeJunit(o.out / "junit" / (name + ".xml"), row.stages, e.name);
+        const int writeups = collectWriteups(e.archive.empty() ? e.path : dir / "unpacked", o.out / "writeups" / name);
         double pts = 0, max = 0;
         for (const auto& s : row.stages) pts += s.points(), max += s.max_points();
         std::lock_guard<std::mutex> lock(print);
         ++done;
+        with_writeups += writeups > 0;
         const int width = 30, filled = static_cast<int>(width * done / entries.size());
         char line[512];
         std::snprintf(line, sizeof line, "[%s%s] %d/%zu  %s: %g / %g%s%s", std::string(filled, '#').c_str(),
@@ -213,8 +235,9 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
     for (size_t i = 0; i < entries.size(); ++i) book.push_back({entries[i].name, rows[i].stages});
     writeFile(o.out / "moodle.csv", moodleCsv(items, book));
     writeFile(o.out / "canvas.csv", canvasCsv(items, book));
-    std::printf("graded %zu submissions: %s (moodle.csv and canvas.csv for import, feedback/NAME.json and junit/NAME.xml beside it)\n",
-                entries.size(), (o.out / "gradebook.csv").c_str());
+    std::printf("graded %zu submissions: %s (moodle.csv and canvas.csv for import, feedback/NAME.json and junit/NAME.xml beside it; "
+                "write-ups of %d in writeups/NAME/)\n",
+                entries.size(), (o.out / "gradebook.csv").c_str(), with_writeups);
     return static_cast<int>(entries.size());
 }
 

@@ -32,7 +32,8 @@ int main(int argc, char** argv) {
     CLI::App app{"clothlab-grade — per-stage points from the graded tests"};
     std::vector<std::string> stages, only, answers;
     std::string points_dir, kit_file, submission, class_dir, out_dir, work, reference = "all";
-    std::string json_out, junit_out, gradescope_out, markdown_out, expect, message, mistake, why;
+    std::string json_out, junit_out, gradescope_out, markdown_out, expect, mistake, why;
+    std::vector<std::string> messages;
     int timeout_s = 30, jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     bool quiet = false, no_sandbox = false;
     app.add_option("--stage", stages, "NN=EXECUTABLE: run this graded binary (self-checks of the suite)");
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
     app.add_flag("--no-sandbox", no_sandbox, "Run without bubblewrap (the points are then NOT trustworthy)");
     app.add_option("--expect", expect, "Self-check of the test suite: all-pass, all-fail or some-fail")
         ->check(CLI::IsMember({"all-pass", "all-fail", "some-fail"}));
-    app.add_option("--message", message, "With --expect all-fail: every failure must contain this text");
+    app.add_option("--message", messages, "With --expect all-fail: every failure must contain one of these texts (repeatable)");
     app.add_option("--mistake", mistake, "With --expect some-fail: the name of the mistake the stage was built with");
     app.add_option("--why", why, "With --expect some-fail: what the mistake does wrong (printed with the verdict)");
     app.add_flag("--quiet", quiet, "No per-test failure lines");
@@ -142,8 +143,9 @@ int main(int argc, char** argv) {
         for (const auto& t : s.tests) {
             if (expect == "all-pass" && !t.passed) ++bad, std::printf("expected to pass: %s\n", t.name.c_str());
             if (expect == "all-fail" && t.passed) ++bad, std::printf("passes against the stub (a test that cannot fail?): %s\n", t.name.c_str());
-            if (expect == "all-fail" && !t.passed && t.message.find(message) == std::string::npos)
-                ++bad, std::printf("fails without \"%s\" (crash or wrong message?): %s\n", message.c_str(), t.name.c_str());
+            if (expect == "all-fail" && !t.passed && !messages.empty() &&
+                std::none_of(messages.begin(), messages.end(), [&](const std::string& m) { return t.message.find(m) != std::string::npos; }))
+                ++bad, std::printf("fails without \"%s\" (crash or wrong message?): %s\n", messages.front().c_str(), t.name.c_str());
         }
     if (expect == "some-fail") {
         // A mistake is caught when at least one graded test fails; say which one, and what the mistake is.

@@ -1,0 +1,61 @@
+// Stage 06's experiment, graded by the instructor (not in the student copy: no target leaves this file).
+// Predict: the rebound height of the small cloth of scenes/pbd_bounce.json (dropped flat from H above the
+// contact level, restitution e): it hits with sqrt(2 g H), leaves with e times that and rises to e^2 H.
+// Measure: the height it rises to, with `./lab run scenes/pbd_bounce.json --every 1` on the student's own
+// code. Graded against the same run made here with the student's code, which must reproduce e^2 H.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "clothlab/exercise/06_collision.h"
+#include "clothlab/io/scene_json.h"
+#include "clothlab/sim/simulation.h"
+#include "experiment_scenes.h"
+#include "test_util.h"
+
+using namespace clothlab;
+
+namespace {
+struct Bounce {
+    double H = 0, theory = 0, apex = -INFINITY;  // m
+    bool bounced = false;
+};
+
+// The drop of scenes/pbd_bounce.json with the code this binary links: the highest mean height above the
+// contact level after the first bounce (the mean height starts rising again).
+Bounce dropTheCloth() {
+    const Scene scene = parseScene(kScene_pbd_bounce, "scenes/pbd_bounce.json");
+    const double e = scene.colliders.at(0).restitution, h = scene.solver.thickness;
+    auto sim = makeSimulation(scene);
+    Bounce b;
+    b.H = sim->state().x.row(1).mean() - h;  // every particle starts at the same height
+    b.theory = e * e * b.H;
+    double previous = b.H + h;
+    for (int n = 0; n < scene.solver.steps; ++n) {
+        sim->step();
+        const double y = sim->state().x.row(1).mean();
+        if (!b.bounced && y > previous) b.bounced = true;
+        if (b.bounced && y < previous) break;
+        if (b.bounced) b.apex = y - h;
+        previous = y;
+    }
+    return b;
+}
+}  // namespace
+
+TEST(Experiments, ReboundHeightPredicted) {
+    const Bounce b = dropTheCloth();
+    EXPECT_GRADED(testing_util::gradePrediction("06_collision", "rebound_height", b.theory, 0.01 * b.theory,
+                                              "the rebound height above the contact level from e and H, m"));
+}
+
+TEST(Experiments, ReboundHeightMeasured) {
+    const Bounce b = dropTheCloth();
+    const testing::AssertionResult physics =
+        b.bounced && std::abs(b.apex - b.theory) <= 0.05 * b.theory
+            ? testing::AssertionSuccess()
+            : testing::AssertionFailure() << "with your collision code the cloth does not rebound as restitution demands (the stage's "
+                                             "Task6_4 tests show where)";
+    EXPECT_GRADED(testing_util::gradeMeasurement("06_collision", "rebound_height", b.apex, 0.02 * b.theory, physics,
+                                               "the height the cloth rises to after the bounce, above the contact level, m"));
+}
