@@ -5,8 +5,8 @@
 # FAIL in the graded tests:
 #   1. it has a streamed message (`<<` after the assertion's closing parenthesis); EXPECT_CLOSE,
 #      ASSERT_CLOSE and EXPECT_SAME_DOUBLE too (their text is "actual = 1.2, expected 1 within 0.01"
-#      and says nothing of what is measured). The one exception: EXPECT_TRUE(testing_util::gradeAnswer(...)),
-#      whose `what` and `why` arguments are its description;
+#      and says nothing of what is measured). The one exception: EXPECT_TRUE(testing_util::answerFileIsComplete(...)),
+#      whose message names the answers file and the field that is missing;
 #   2. no GoogleTest comparison that prints doubles with 17 digits (0.29999999999999999): EXPECT_NEAR,
 #      EXPECT_DOUBLE_EQ, EXPECT_FLOAT_EQ, EXPECT_LT/LE/GT/GE (and ASSERT_) are replaced by the 6-digit
 #      helpers of tests/test_util.h (EXPECT_CLOSE, EXPECT_SAME_DOUBLE, EXPECT_LESS, EXPECT_GREATER, ...).
@@ -74,7 +74,7 @@ check() {
         stmt_end = index(rest, ";"); tail = stmt_end ? substr(rest, 1, stmt_end - 1) : rest
         if (name ~ /^(EXPECT|ASSERT)_(NEAR|DOUBLE_EQ|FLOAT_EQ|LT|LE|GT|GE)$/)
           report(start, name " prints doubles with 17 digits (0.29999999999999999): use the 6-digit helpers of tests/test_util.h (EXPECT_CLOSE, EXPECT_SAME_DOUBLE, EXPECT_LESS, EXPECT_LESS_EQ, EXPECT_GREATER, EXPECT_GREATER_EQ, EXPECT_EXACT)")
-        if (name ~ /^(EXPECT|ASSERT)_(TRUE|FALSE)$/ && args ~ /^[A-Z_]+[ \t\n]*\([ \t\n]*(::)?(clothlab::)?(testing_util::)?gradeAnswer[ \t\n]*\(/) continue
+        if (name ~ /^(EXPECT|ASSERT)_(TRUE|FALSE)$/ && args ~ /^[A-Z_]+[ \t\n]*\([ \t\n]*(::)?(clothlab::)?(testing_util::)?answerFileIsComplete[ \t\n]*\(/) continue
         if (tail !~ /<</)
           report(start, name " without a message: stream one with << that names the quantity, what physics demands and what was measured")
       }
@@ -111,4 +111,4 @@ expect_caught "an EXPECT_NEAR" "EXPECT_NEAR prints doubles with 17 digits"
 fresh; printf '\nTEST(Planted, BareFailure) {\n    ADD_FAILURE();\n}\n' >>"$tmp/$first"
 expect_caught "a bare ADD_FAILURE" "ADD_FAILURE without a message"
 
-echo "assertion messages: all $count graded assertions in ${#files[@]} files carry a streamed explanation (or gradeAnswer's what/why) and no 17-digit comparison; the check fails on a planted bare EXPECT_TRUE, a bare EXPECT_CLOSE, a << inside a string, an EXPECT_NEAR and a bare ADD_FAILURE"
+echo "assertion messages: all $count graded assertions in ${#files[@]} files carry a streamed explanation (or answerFileIsComplete's file and field) and no 17-digit comparison; the check fails on a planted bare EXPECT_TRUE, a bare EXPECT_CLOSE, a << inside a string, an EXPECT_NEAR and a bare ADD_FAILURE"
