@@ -10,6 +10,7 @@
 #   //@task N.M   lines put instead of task N.M's `throw NotImplemented(...)`
 #   //@tail       lines put at the end of the file
 #   //@no-stub    the lines after it are the whole file (an attack that needs no stub)
+#   //@use NAME   (inside a section) the lines of tests/instructor/hostile/lib/NAME.cpp, shared by attacks
 set -eu
 root=$1 name=$2 stage=$3 out=$4
 snippet=$root/tests/instructor/hostile/$name.cpp
@@ -18,11 +19,17 @@ stub=$(ls "$root"/exercises/"$stage"_*/*.cpp 2>/dev/null | head -1)
 [[ -n $stub ]] || { echo "assemble_attack.sh: no stub for stage $stage in $root/exercises" >&2; exit 2; }
 dir=$out/$(basename "$(dirname "$stub")")
 mkdir -p "$dir"
-awk -v snippet="$snippet" '
+awk -v snippet="$snippet" -v libdir="$root/tests/instructor/hostile/lib" '
   BEGIN {
     sec = "top"
     while ((getline line < snippet) > 0) {
       if (line ~ /^\/\/@(head|each|tail|no-stub)$/ || line ~ /^\/\/@task [0-9]+\.[0-9]+$/) { sec = substr(line, 4); have[sec] = 1; continue }
+      if (line ~ /^\/\/@use [a-z_]+$/) {
+        lib = libdir "/" substr(line, 8) ".cpp"
+        if ((getline part < lib) <= 0) { print snippet ": " line ": no " lib > "/dev/stderr"; bad = 1; exit 2 }
+        do text[sec] = text[sec] part "\n"; while ((getline part < lib) > 0)
+        close(lib); continue
+      }
       if (line ~ /^\/\/@/) { print snippet ": unknown section marker: " line > "/dev/stderr"; bad = 1; exit 2 }
       text[sec] = text[sec] line "\n"
     }
