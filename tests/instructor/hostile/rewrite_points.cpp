@@ -10,29 +10,7 @@
 // WARNING: this fixture damages the instructor's tree when run without the sandbox (git restores it).
 
 // ---- where is the instructor's tree? the CMakeCache.txt above the test binary names it ----------
-namespace {
-std::string hostileSourceTree() {
-    char exe[4096];
-    const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n <= 0) return "";
-    exe[n] = 0;
-    std::string dir(exe);
-    for (int up = 0; up < 6 && dir.size() > 1; ++up) {
-        dir = dir.substr(0, dir.rfind('/'));
-        if (std::FILE* f = std::fopen((dir + "/CMakeCache.txt").c_str(), "r")) {
-            char line[8192];
-            std::string tree;
-            while (std::fgets(line, sizeof line, f)) {
-                std::string l(line);
-                if (l.rfind("CMAKE_HOME_DIRECTORY:INTERNAL=", 0) == 0) tree = l.substr(30, l.find_last_not_of("\r\n") - 29);
-            }
-            std::fclose(f);
-            if (!tree.empty()) return tree;
-        }
-    }
-    return "";
-}
-}  // namespace
+//@use source_tree
 
 namespace {
 struct HostileRewrite {
