@@ -8,15 +8,9 @@
 
 
 //@use forger
+//@use fake_output
 
 namespace {
-const char* const kHostileFake =
-    "[==========] Running 1 test from 1 test suite.\n"
-    "[----------] Global test environment set-up.\n"
-    "[ RUN      ] %s\n"
-    "[       OK ] %s (0 ms)\n"
-    "[==========] 1 test from 1 test suite ran. (0 ms total)\n"
-    "[  PASSED  ] 1 test.\n";
 
 struct HostileFakeOutput {
     HostileFakeOutput() {
