@@ -196,13 +196,12 @@ inline testing::AssertionResult readAnswersFile(const char* stageDir, nlohmann::
     return testing::AssertionSuccess();
 }
 
-/// Reads the number the student entered as `section`.`field`.value (section "predict" or "measure")
-/// into *value. A missing field, a null (not entered yet) or a non-number is a failure whose message
-/// names the file and the field; nothing throws.
-inline testing::AssertionResult readAnswer(const char* stageDir, const std::string& section, const std::string& field, double* value) {
-    nlohmann::json doc;
-    if (auto read = readAnswersFile(stageDir, &doc); !read) return read;
-    const std::string path = answersShownAs(stageDir), name = section + "." + field;
+/// The number in `section`.`field`.value of an answers file already read (doc; `path` as the student
+/// knows it), into *value. A missing field, a null (not entered yet) or a non-number is a failure whose
+/// message names the file and the field.
+inline testing::AssertionResult answerIn(const nlohmann::json& doc, const std::string& path, const std::string& section,
+                                         const std::string& field, double* value) {
+    const std::string name = section + "." + field;
     if (!doc.contains(section) || !doc[section].is_object() || !doc[section].contains(field))
         return testing::AssertionFailure() << path << ": " << name << ": missing (keep the file's fields as shipped)";
     const nlohmann::json& entry = doc[section][field];
@@ -217,19 +216,27 @@ inline testing::AssertionResult readAnswer(const char* stageDir, const std::stri
     return testing::AssertionSuccess();
 }
 
+/// Reads answersPath(stageDir) and the number the student entered as `section`.`field`.value (section
+/// "predict" or "measure") into *value; every failure names the file (and the field); nothing throws.
+inline testing::AssertionResult readAnswer(const char* stageDir, const std::string& section, const std::string& field, double* value) {
+    nlohmann::json doc;
+    if (auto read = readAnswersFile(stageDir, &doc); !read) return read;
+    return answerIn(doc, answersShownAs(stageDir), section, field, value);
+}
+
 /// The student's check of the answers file: every field of `predicts` and `measures` holds a finite
 /// number and "explain" has at least five words. It grades no number: those are graded by the
 /// instructor (the message says so).
 inline testing::AssertionResult answerFileIsComplete(const char* stageDir, const std::vector<std::string>& predicts,
                                                      const std::vector<std::string>& measures) {
-    double v = 0;
-    for (const auto& f : predicts)
-        if (auto r = readAnswer(stageDir, "predict", f, &v); !r) return r;
-    for (const auto& f : measures)
-        if (auto r = readAnswer(stageDir, "measure", f, &v); !r) return r;
     nlohmann::json doc;
     if (auto read = readAnswersFile(stageDir, &doc); !read) return read;
     const std::string path = answersShownAs(stageDir);
+    double v = 0;
+    for (const auto& f : predicts)
+        if (auto r = answerIn(doc, path, "predict", f, &v); !r) return r;
+    for (const auto& f : measures)
+        if (auto r = answerIn(doc, path, "measure", f, &v); !r) return r;
     if (!doc.contains("explain") || !doc["explain"].is_string())
         return testing::AssertionFailure() << path << ": explain: missing (one or two sentences: why your measurement differs from your prediction)";
     std::istringstream words(doc["explain"].get<std::string>());
