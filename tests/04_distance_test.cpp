@@ -274,6 +274,117 @@ TEST(Task4_3_ProjectDistance, NearlyCoincidentPointsArePushedApart) {
     });
 }
 
+// ---- Bonus 4.4: long-range attachments (optional) -------------------------------------------------
+namespace {
+/// Rest positions of `n` particles in a row along x, `spacing` m apart.
+Matrix3X row(int n, double spacing) {
+    Matrix3X x = Matrix3X::Zero(3, n);
+    for (int i = 0; i < n; ++i) x(0, i) = spacing * i;
+    return x;
+}
+std::string list(const std::vector<int>& v) {
+    std::ostringstream o;
+    for (size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "[") << v[i];
+    return o.str() + "]";
+}
+}  // namespace
+
+TEST(Bonus4_4_TetherAnchors, NearestPinnedParticleLowestIndexOnTies) {
+    // A row x = 0, 0.25, ..., 1.25 m pinned at particles 1 and 5: 3 is 0.5 m from both (tie: the lower index, 1).
+    // (Spacings of 0.25 m keep every distance exact in binary floating point, so the tie is a tie.)
+    VectorX w = VectorX::Ones(6);
+    w[1] = w[5] = 0.0;
+    const std::vector<int> want = {1, -1, 1, 1, 5, -1};
+    EXPECT_EQ(list(tetherAnchors(row(6, 0.25), w)), list(want))
+        << "the anchors of a row of 6 particles 0.25 m apart pinned at 1 and 5: each free particle's anchor is the nearest "
+           "pinned one (of equally near ones the lower index), a pinned particle has none (-1)";
+    // A 3 x 3 grid (0.25 m, index = 3 row + column) pinned at its top corners 0 and 2.
+    Matrix3X grid(3, 9);
+    for (int i = 0; i < 9; ++i) grid.col(i) = Vec3(0.25 * (i % 3), -0.25 * (i / 3), 0.0);
+    w = VectorX::Ones(9);
+    w[0] = w[2] = 0.0;
+    const std::vector<int> want_grid = {-1, 0, -1, 0, 0, 2, 0, 0, 2};
+    EXPECT_EQ(list(tetherAnchors(grid, w)), list(want_grid))
+        << "the anchors of a 3 x 3 grid (0.25 m, index = 3 row + column) pinned at its top corners 0 and 2: the nearest pinned "
+           "particle by rest distance, the lower index on a tie (the middle column)";
+}
+
+TEST(Bonus4_4_TetherAnchors, NoneWhenNothingIsPinned) {
+    EXPECT_EQ(list(tetherAnchors(row(4, 0.1), VectorX::Ones(4))), list({-1, -1, -1, -1}))
+        << "the anchors of 4 free particles and no pinned one: there is no pin to tie them to, every entry is -1";
+    EXPECT_EQ(tetherAnchors(Matrix3X(3, 0), VectorX(0)).size(), 0u) << "the anchors of no particles: an empty list";
+}
+
+TEST(Bonus4_4_ProjectTether, SlackTetherMovesNothing) {
+    const Vec3 a(0.1, 0.2, -0.3), p = a + Vec3(0.3, -0.4, 0.0);  // 0.5 m from the anchor
+    EXPECT_EXACT(projectTether(p, a, 0.7).norm(), 0.0) << "a tether of length 0.7 m with its particle 0.5 m from the anchor is "
+                                                          "slack: a one-sided constraint C <= 0 that holds moves nothing";
+    EXPECT_EXACT(projectTether(a, a, 0.7).norm(), 0.0) << "a particle on its anchor (a tether of 0.7 m): slack, no move, no NaN";
+}
+
+TEST(Bonus4_4_ProjectTether, TautTetherEndsExactlyAtItsLength) {
+    forEachSeed([](unsigned seed) -> testing::AssertionResult {
+        RandomGeometry G(seed);
+        const Vec3 a = G.logUniform(1e-2, 1e2) * G.unitVector();
+        const double L = G.logUniform(1e-3, 10.0), len = L * G.uniform(1.001, 3.0);
+        const Vec3 p = a + len * G.unitVector();
+        const Vec3 dp = projectTether(p, a, L);
+        const double after = (p + dp - a).norm();
+        const Vec3 toward = (a - p).normalized();
+        if (!dp.allFinite() || std::abs(after - L) > 1e-9 * (L + a.norm()) || (dp - dp.dot(toward) * toward).norm() > 1e-9 * dp.norm() ||
+            dp.dot(toward) <= 0)
+            return testing::AssertionFailure() << "A taut tether (length L = " << L << " m, the particle " << len
+                                               << " m from its anchor " << str(a) << ") must move the particle straight towards "
+                                                  "the anchor until it is exactly L away; dp = " << str(dp)
+                                               << ", distance afterwards " << after << " m.";
+        const Vec3 onto = projectTether(p, a, 0.0);
+        if (!onto.allFinite() || (p + onto - a).norm() > 1e-9 * (len + a.norm()))
+            return testing::AssertionFailure() << "A tether of length 0 must pull the particle onto its anchor " << str(a)
+                                               << "; it ends at " << str(p + onto) << ".";
+        return testing::AssertionSuccess();
+    });
+}
+
+TEST(Bonus4_4_Tethers, HangingChainStretchesNoFartherThanAtRest) {
+    // A chain of 20 particles, 0.05 m apart, pinned at its first end, released horizontally under gravity and
+    // simulated with PBD (your 4.3 at k = 1, 2 iterations, dt = 1/60 s) for 2 s. With 2 iterations the chain
+    // stretches; tethers of the rest distance to the pin, projected after the links, must hold every particle
+    // within its rest distance of the pin.
+    const int n = 20;
+    const Matrix3X rest = row(n, 0.05);
+    VectorX w = VectorX::Ones(n);
+    w[0] = 0.0;
+    auto simulate = [&](bool tethers) {
+        const std::vector<int> anchor = tetherAnchors(rest, w);
+        Matrix3X x = rest, v = Matrix3X::Zero(3, n);
+        double worst = 0.0;  // the largest distance to the pin over the rest distance, over all steps
+        const double dt = 1.0 / 60.0;
+        for (int step = 0; step < 120; ++step) {
+            Matrix3X p = x;
+            for (int i = 1; i < n; ++i) p.col(i) += dt * (v.col(i) + dt * Vec3(0, -9.81, 0));
+            for (int it = 0; it < 2; ++it)
+                for (int i = 0; i + 1 < n; ++i) {
+                    const auto c = projectDistanceConstraint(p.col(i), p.col(i + 1), w[i], w[i + 1], 0.05, 1.0);
+                    p.col(i) += c.dp1;
+                    p.col(i + 1) += c.dp2;
+                }
+            if (tethers)
+                for (int i = 0; i < n; ++i)
+                    if (anchor[i] >= 0) p.col(i) += projectTether(p.col(i), p.col(anchor[i]), (rest.col(i) - rest.col(anchor[i])).norm());
+            v = (p - x) / dt;
+            x = p;
+            for (int i = 1; i < n; ++i) worst = std::max(worst, (x.col(i) - x.col(0)).norm() / (0.05 * i));
+        }
+        return worst;
+    };
+    const double loose = simulate(false);
+    ASSERT_GREATER(loose, 1.02) << "(the test's own scenario: without tethers the chain must stretch, or the test shows nothing; "
+                                   "with your 4.3 the largest distance to the pin over its rest distance was " << loose << ")";
+    EXPECT_LESS_EQ(simulate(true), 1.0 + 1e-9) << "the largest distance of a chain particle to the pin over its rest distance, "
+                                                  "with a tether per particle projected after the links in every step: a "
+                                                  "tether must keep each particle within its rest distance of the pin";
+}
+
 // ================================ Experiment (answers.json) ===================================
 // The stage's experiment (task sheet, "Experiment"): predict from theory, measure with your own code,
 // explain the difference, in exercises/04_distance/answers.json. This test checks only that the file is

@@ -6,6 +6,7 @@
 //     ./lab grade --stage 04
 // Stuck? `./lab hint 4.1` (or 4.2, ...) asks a question and names the slide; add 2 for one sub-step, 3 for the formula.
 #include <cmath>
+#include <vector>
 
 #include "clothlab/core/not_implemented.h"
 #include "clothlab/exercise/04_distance.h"
@@ -32,6 +33,19 @@ DistanceCorrection projectDistanceConstraint(const Vec3& p1, const Vec3& p2, dou
     // TODO 4.3: the projection of the distance constraint (task sheet 4.3; contract in the header)
     (void)p1; (void)p2; (void)w1; (void)w2; (void)d; (void)k;
     throw NotImplemented("exercise 4.3 projectDistanceConstraint");
+}
+
+// ---- Bonus 4.4: long-range attachments (optional, beyond the slides) ---------------------------
+std::vector<int> tetherAnchors(const Matrix3X& rest, const VectorX& w) {
+    // TODO 4.4: bonus, the nearest pinned particle of every free one (task sheet 4.4; contract in the header)
+    (void)rest; (void)w;
+    throw NotImplemented("exercise 4.4 tetherAnchors (bonus)");
+}
+
+Vec3 projectTether(const Vec3& p, const Vec3& anchor, double L) {
+    // TODO 4.4: bonus, the one-sided tether projection (task sheet 4.4; contract in the header)
+    (void)p; (void)anchor; (void)L;
+    throw NotImplemented("exercise 4.4 projectTether (bonus)");
 }
 
 }  // namespace clothlab

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Every task sheet (exercises/NN_name/README.md) shows the points of tests/NN_name.points.json: in its
 # "## Before you start" section a table "| task | what | points |" with one row per task N.M (the sum
-# of the tests TaskN_M_*.*), a row "Experiments" (the sum of Experiments.*) and a row "total" (the
-# file's total). Then it proves it fails on a copy with one number changed.
+# of the tests TaskN_M_*.*), a row "Experiments" (the sum of Experiments.*), a row "total" (the
+# file's total) and, when the file has bonus tests BonusN_M_*.*, a row "N.M (bonus)" with their sum.
+# Then it proves it fails on a copy with one number changed.
 # Usage: sheet_points_check.sh SOURCE_DIR
 set -u
 root=$1
@@ -14,10 +15,12 @@ check() {  # check TREE: one line per disagreement
     [[ -f $sheet ]] || { echo "$name: no sheet exercises/$name/README.md"; bad=1; continue; }
     # "ROW POINTS" lines from the file: per task N.M, Experiments, total
     want=$(jq -r 'def task: capture("^Task(?<n>[0-9]+)_(?<m>[0-9]+)_") | "\(.n).\(.m)";
-      .tests | to_entries
+      .bonus as $bonus | .tests | to_entries
       | (map(select(.key | startswith("Task"))) | group_by(.key | task)[] | "\(.[0].key | task) \(map(.value) | add)"),
         "Experiments \(map(select(.key | startswith("Experiments.")) | .value) | add // 0)",
-        "total \(map(.value) | add)"' "$pf" | sort)
+        "total \(map(.value) | add)",
+      (($bonus // {}) | to_entries | map(.key |= sub("^Bonus"; "Task"))
+        | group_by(.key | task)[] | "\(.[0].key | task)(bonus) \(map(.value) | add)")' "$pf" | sort)
     # the same from the sheet's table (first and last cell of each row after the header)
     got=$(sed -n '/^## Before you start/,/^## /p' "$sheet" \
       | sed -n '/^| task | what | points |$/,/^$/p' | tail -n +3 | grep '^|' \

@@ -117,7 +117,7 @@ while IFS= read -r row; do
     want=${expect[$name,${H[$i]}]}
     [[ ${C[$i]} == "$want" ]] || { echo "$name: stage ${H[$i]}: ${C[$i]} points, want $want"; bad=1; }
   done
-  got_status=$(echo "$row" | cut -d, -f$((${#stages[@]} + 4)))  # student, stages, total, max, status
+  got_status=$(echo "$row" | cut -d, -f$((${#stages[@]} + 4)))  # student, stages, total, max, status, bonus
   case ${status[$name]} in
     error) [[ $got_status == *error* ]] || { echo "$name: status '$got_status', want an error"; bad=1; } ;;
     *) [[ $got_status == "${status[$name]}" ]] || { echo "$name: status '$got_status', want '${status[$name]}'"; bad=1; } ;;

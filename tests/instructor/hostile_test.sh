@@ -78,15 +78,15 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
       [[ $p == "$want" ]] || fail "the reference scores $p of $want on stage ${H0[$i]}"
     fi
   done
-  echo "$ref_row,0,0,ok" >>"$book"
+  echo "$ref_row,0,0,ok,0" >>"$book"
 fi
 [[ -f $book ]] || fail "no gradebook"
-# Columns: student,01,...,06,total,max,status. The reference row gives each stage's maximum.
+# Columns: student,01,...,07,total,max,status,bonus. The reference row gives each stage's maximum.
 header=$(head -1 "$book")
 ref=$(grep '^reference,' "$book") || fail "no reference row"
 IFS=, read -r -a H <<<"$header"
 IFS=, read -r -a R <<<"$ref"
-nstages=$((${#H[@]} - 4))
+nstages=$((${#H[@]} - 5))
 [[ $mode == fast || ${R[$((nstages + 1))]} == "${R[$((nstages + 2))]}" ]] || fail "the reference scores ${R[$((nstages + 1))]} of ${R[$((nstages + 2))]}: $ref"
 bad=0
 while IFS= read -r row; do

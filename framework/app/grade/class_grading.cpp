@@ -108,7 +108,8 @@ std::vector<StageResult> resultsFromJson(const json& j) {
         st.status = s.at("status");
         st.problem = s.at("problem");
         for (const auto& t : s.at("tests"))
-            st.tests.push_back({t.at("name"), t.at("passed"), t.at("points"), t.at("max_points"), t.at("message")});
+            st.tests.push_back({t.at("name"), t.at("passed"), t.at("points"), t.at("max_points"), t.at("message"),
+                                t.value("bonus", false)});
         out.push_back(st);
     }
     return out;
@@ -206,9 +207,9 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
     std::ofstream csv(o.out / "gradebook.csv");
     csv << "student";
     for (const auto& st : kit.stages) csv << "," << st.stage;
-    csv << ",total,max,status\n";
+    csv << ",total,max,status,bonus\n";
     for (size_t i = 0; i < entries.size(); ++i) {
-        double pts = 0, max = 0;
+        double pts = 0, max = 0, bonus = 0;
         csv << csvField(entries[i].name);
         for (const auto& st : kit.stages) {
             double p = 0;
@@ -216,8 +217,8 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
                 if (s.stage == st.stage) p = s.points();
             csv << "," << csvNumber(p);
         }
-        for (const auto& s : rows[i].stages) pts += s.points(), max += s.max_points();
-        csv << "," << csvNumber(pts) << "," << csvNumber(max) << "," << csvField(rows[i].status) << "\n";
+        for (const auto& s : rows[i].stages) pts += s.points(), max += s.max_points(), bonus += s.bonus();
+        csv << "," << csvNumber(pts) << "," << csvNumber(max) << "," << csvField(rows[i].status) << "," << csvNumber(bonus) << "\n";
     }
     csv.close();
     // The same points in the import formats of Moodle and Canvas: one column per stage (grade item or

@@ -10,12 +10,17 @@ namespace grade {
 
 double StageResult::points() const {
     double s = 0;
-    for (const auto& t : tests) s += t.points;
+    for (const auto& t : tests) s += t.bonus ? 0.0 : t.points;
     return s;
 }
 double StageResult::max_points() const {
     double s = 0;
-    for (const auto& t : tests) s += t.max_points;
+    for (const auto& t : tests) s += t.bonus ? 0.0 : t.max_points;
+    return s;
+}
+double StageResult::bonus() const {
+    double s = 0;
+    for (const auto& t : tests) s += t.bonus ? t.points : 0.0;
     return s;
 }
 int StageResult::passed() const {
@@ -91,8 +96,29 @@ json loadPoints(const fs::path& points_dir, const std::string& stage) {
     if (!j.contains("tests") || !j["tests"].is_object() || j["tests"].empty()) die(f + ": tests: missing, empty or not an object");
     for (auto it = j["tests"].begin(); it != j["tests"].end(); ++it)
         if (!it->is_number() || it->get<double>() <= 0) die(f + ": tests." + it.key() + ": points must be a number > 0");
+    if (j.contains("bonus")) {
+        if (!j["bonus"].is_object()) die(f + ": bonus: not an object");
+        for (auto it = j["bonus"].begin(); it != j["bonus"].end(); ++it) {
+            if (!it->is_number() || it->get<double>() <= 0) die(f + ": bonus." + it.key() + ": points must be a number > 0");
+            if (j["tests"].contains(it.key())) die(f + ": bonus." + it.key() + ": also under tests");
+        }
+    }
     j["file"] = f;
     return j;
+}
+
+std::vector<TestResult> pointsTests(const json& points) {
+    std::vector<TestResult> out;
+    for (const char* part : {"tests", "bonus"})
+        if (points.contains(part))
+            for (auto it = points[part].begin(); it != points[part].end(); ++it) {
+                TestResult t;
+                t.name = it.key();
+                t.max_points = it->get<double>();
+                t.bonus = std::string(part) == "bonus";
+                out.push_back(t);
+            }
+    return out;
 }
 
 StageResult ungradedStage(const fs::path& points_dir, const std::string& stage, const std::string& status,
@@ -103,8 +129,8 @@ StageResult ungradedStage(const fs::path& points_dir, const std::string& stage, 
     s.title = points["title"];
     s.status = status;
     s.problem = why;
-    for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it)
-        s.tests.push_back({it.key(), false, 0.0, it->get<double>(), status + ": " + why});
+    s.tests = pointsTests(points);
+    for (auto& t : s.tests) t.message = status + ": " + why;
     return s;
 }
 

@@ -17,6 +17,7 @@ struct TestResult {
     bool passed = false;
     double points = 0, max_points = 0;
     std::string message;  ///< why it failed
+    bool bonus = false;   ///< a bonus test: its points count beside the stage's points, never in max_points
 };
 
 struct StageResult {
@@ -24,8 +25,9 @@ struct StageResult {
     std::string status = "graded";  ///< graded | not submitted | rejected | does not compile | does not link
     std::string problem;            ///< what the student must fix when status is not "graded"
     std::vector<TestResult> tests;
-    double points() const;
-    double max_points() const;
+    double points() const;      ///< earned, without the bonus tests
+    double max_points() const;  ///< possible, without the bonus tests
+    double bonus() const;       ///< earned by the bonus tests
     int passed() const;
 };
 
@@ -42,8 +44,12 @@ std::string shellQuote(const fs::path& p);
 uint64_t fnv1a(const std::string& data, uint64_t h = 1469598103934665603ull);
 std::string hex(uint64_t h);
 
-/// The points file tests/NN_name.points.json of stage NN, checked: {"title": "...", "tests": {"Suite.Test": points > 0}}.
+/// The points file tests/NN_name.points.json of stage NN, checked: {"title": "...", "tests": {"Suite.Test": points > 0}},
+/// optionally "bonus": {"Suite.Test": points > 0} (tests of an optional task, counted beside the stage's points).
 json loadPoints(const fs::path& points_dir, const std::string& stage);
+
+/// The graded tests of a points file in its order, the bonus tests last, with their points.
+std::vector<TestResult> pointsTests(const json& points);
 
 /// Every test of a stage failed with `why` (a stage that could not be graded).
 StageResult ungradedStage(const fs::path& points_dir, const std::string& stage, const std::string& status,

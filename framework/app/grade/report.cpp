@@ -7,14 +7,29 @@
 
 namespace grade {
 
+namespace {
+/// " + B bonus" when the stages have bonus tests, else "".
+std::string bonusNote(double earned, bool any) {
+    char b[64];
+    std::snprintf(b, sizeof b, " + %g bonus", earned);
+    return any ? b : "";
+}
+bool hasBonus(const StageResult& s) {
+    return std::any_of(s.tests.begin(), s.tests.end(), [](const TestResult& t) { return t.bonus; });
+}
+}  // namespace
+
 void printTable(const std::vector<StageResult>& stages, bool verbose, int lines) {
-    double pts = 0, max = 0;
+    double pts = 0, max = 0, bonus = 0;
+    bool any_bonus = false;
     std::printf("\n%-6s %-44s %9s %15s\n", "stage", "title", "tests", "points");
     for (const auto& s : stages) {
-        std::printf("%-6s %-44s %4d / %-3zu %7.1f / %-5.1f\n", s.stage.c_str(), s.title.c_str(), s.passed(), s.tests.size(),
-                    s.points(), s.max_points());
+        std::printf("%-6s %-44s %4d / %-3zu %7.1f / %-5.1f%s\n", s.stage.c_str(), s.title.c_str(), s.passed(), s.tests.size(),
+                    s.points(), s.max_points(), bonusNote(s.bonus(), hasBonus(s)).c_str());
         pts += s.points();
         max += s.max_points();
+        bonus += s.bonus();
+        any_bonus = any_bonus || hasBonus(s);
         if (!verbose) continue;
         if (s.status != "graded") {
             std::string what = s.status;
@@ -23,28 +38,32 @@ void printTable(const std::vector<StageResult>& stages, bool verbose, int lines)
             continue;
         }
         for (const auto& t : s.tests)
-            if (!t.passed) std::printf("    FAIL %s\n        %s\n", t.name.c_str(), firstLines(t.message, lines).c_str());
+            if (!t.passed)
+                std::printf("    %s %s\n        %s\n", t.bonus ? "BONUS NOT EARNED" : "FAIL", t.name.c_str(),
+                            firstLines(t.message, lines).c_str());
     }
-    std::printf("%-6s %-44s %9s %7.1f / %-5.1f\n\n", "total", "", "", pts, max);
+    std::printf("%-6s %-44s %9s %7.1f / %-5.1f%s\n\n", "total", "", "", pts, max, bonusNote(bonus, any_bonus).c_str());
 }
 
 json resultsJson(const std::vector<StageResult>& stages) {
     json j;
-    double pts = 0, max = 0;
+    double pts = 0, max = 0, bonus = 0;
     j["stages"] = json::array();
     for (const auto& s : stages) {
         json st = {{"stage", s.stage}, {"title", s.title}, {"status", s.status}, {"problem", s.problem},
-                   {"points", s.points()}, {"max_points", s.max_points()}, {"passed", s.passed()},
+                   {"points", s.points()}, {"max_points", s.max_points()}, {"bonus", s.bonus()}, {"passed", s.passed()},
                    {"tests", json::array()}};
         for (const auto& t : s.tests)
             st["tests"].push_back({{"name", t.name}, {"passed", t.passed}, {"points", t.points},
-                                   {"max_points", t.max_points}, {"message", t.message}});
+                                   {"max_points", t.max_points}, {"bonus", t.bonus}, {"message", t.message}});
         j["stages"].push_back(st);
         pts += s.points();
         max += s.max_points();
+        bonus += s.bonus();
     }
     j["points"] = pts;
     j["max_points"] = max;
+    j["bonus"] = bonus;
     j["status"] = statusLine(stages);
     return j;
 }
@@ -87,15 +106,17 @@ void writeJunit(const fs::path& path, const std::vector<StageResult>& stages, co
 
 json gradescopeJson(const std::vector<StageResult>& stages, double execution_seconds) {
     // Field names and values as Gradescope's autograder specification names them (see report.h).
+    // A bonus test has max_score 0: Gradescope adds its score as extra credit.
     json j;
     double score = 0, max = 0;
     json tests = json::array();
     for (const auto& s : stages)
         for (const auto& t : s.tests) {
             score += t.points;
-            max += t.max_points;
-            tests.push_back({{"name", "stage " + s.stage + ": " + t.name}, {"name_format", "text"}, {"score", t.points},
-                             {"max_score", t.max_points}, {"status", t.passed ? "passed" : "failed"},
+            max += t.bonus ? 0.0 : t.max_points;
+            tests.push_back({{"name", "stage " + s.stage + ": " + t.name + (t.bonus ? " (bonus)" : "")},
+                             {"name_format", "text"}, {"score", t.points}, {"max_score", t.bonus ? 0.0 : t.max_points},
+                             {"status", t.passed ? "passed" : "failed"},
                              {"output", t.passed ? "" : t.message}, {"visibility", "visible"}});
         }
     char total[128];
@@ -125,7 +146,8 @@ std::string markdownTable(const std::vector<StageResult>& stages) {
     double pts = 0, max = 0;
     char b[128];
     for (const auto& s : stages) {
-        std::snprintf(b, sizeof b, " | %d / %zu | %g / %g |\n", s.passed(), s.tests.size(), s.points(), s.max_points());
+        std::snprintf(b, sizeof b, " | %d / %zu | %g / %g%s |\n", s.passed(), s.tests.size(), s.points(), s.max_points(),
+                      bonusNote(s.bonus(), hasBonus(s)).c_str());
         md += "| " + s.stage + " | " + mdCell(s.title) + " | " + mdCell(s.status) + b;
         pts += s.points();
         max += s.max_points();

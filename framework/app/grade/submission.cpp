@@ -11,6 +11,7 @@
 #include <iostream>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <memory>
 #include <stdexcept>
@@ -338,23 +339,23 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
     s.title = points["title"];
     const std::string file = fs::path(points["file"].get<std::string>()).filename().string();  // NN_name.points.json
     const std::string shown = "exercises/" + file.substr(0, file.find('.')) + "/answers.json";
-    std::vector<std::string> names;
-    for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it) names.push_back(it.key());
-    s.tests.resize(names.size());
+    const std::vector<TestResult> graded = pointsTests(points);
+    s.tests.resize(graded.size());
     std::atomic<int> timeouts{0};
     fs::create_directories(logs);
     const std::vector<int> cpus = usableCpus();
-    parallelFor(static_cast<int>(names.size()), jobs, [&](int i, int worker) {
+    parallelFor(static_cast<int>(graded.size()), jobs, [&](int i, int worker) {
         TestResult r;
         if (timeouts >= 2) {
-            r.name = names[i];
+            r.name = graded[i].name;
             r.message = "not run: two tests of this stage timed out already";
         } else {
             const int cpu = cpus.empty() ? -1 : cpus[static_cast<size_t>(worker) % cpus.size()];
-            r = runTest(exe, server, answers, shown, names[i], timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
+            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
             if (r.message.rfind("timed out", 0) == 0) ++timeouts;
         }
-        r.max_points = points["tests"][names[i]].get<double>();
+        r.max_points = graded[i].max_points;
+        r.bonus = graded[i].bonus;
         r.points = r.passed ? r.max_points : 0.0;
         s.tests[i] = r;
     });
@@ -440,10 +441,14 @@ StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, co
         else names.insert(suite + line.substr(line.find_first_not_of(' ')));
     }
     const json points = loadPoints(points_dir, stage);
+    std::set<std::string> listed;
+    for (const auto& t : pointsTests(points)) {
+        listed.insert(t.name);
+        if (!names.count(t.name))
+            die(points["file"].get<std::string>() + (t.bonus ? ": bonus." : ": tests.") + t.name + ": no such test in " + exe.string());
+    }
     for (const auto& n : names)
-        if (!points["tests"].contains(n)) die(points["file"].get<std::string>() + ": tests." + n + ": the graded test has no points");
-    for (auto it = points["tests"].begin(); it != points["tests"].end(); ++it)
-        if (!names.count(it.key())) die(points["file"].get<std::string>() + ": tests." + it.key() + ": no such test in " + exe.string());
+        if (!listed.count(n)) die(points["file"].get<std::string>() + ": tests." + n + ": the graded test has no points");
     const fs::path folder = answersFolder(answers, tmp / ("answers_" + stage));
     return runStage(points_dir, stage, fs::absolute(exe), {}, folder, timeout_seconds, jobs, tmp);
 }

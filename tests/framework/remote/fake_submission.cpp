@@ -101,6 +101,8 @@ void pbdStep(PbdParticles& P, const PbdCallbacks& cb, double, int, double) {
 double distanceConstraint(const Vec3& p1, const Vec3& p2, double d) { return (p1 - p2).norm() - d; }
 Vec3 distanceGradient(const Vec3&, const Vec3&) { throw NotImplemented("4.2"); }
 DistanceCorrection projectDistanceConstraint(const Vec3&, const Vec3&, double, double, double, double) { throw NotImplemented("4.3"); }
+std::vector<int> tetherAnchors(const Matrix3X&, const VectorX&) { throw NotImplemented("4.4"); }
+Vec3 projectTether(const Vec3&, const Vec3&, double) { throw NotImplemented("4.4"); }
 
 BendingGradients bendingGradients(const Vec3&, const Vec3&, const Vec3&, const Vec3&) { throw NotImplemented("5.1"); }
 BendingCorrection projectBendingConstraint(const Vec3&, const Vec3&, const Vec3&, const Vec3&, double, double, double,

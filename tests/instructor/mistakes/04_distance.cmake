@@ -33,3 +33,16 @@ clothlab_mistake(gradient_absolute_epsilon FILE distance.cpp
 clothlab_mistake(projection_absolute_epsilon FILE distance.cpp
   FIND "if (len < 1e-12 || wsum <= 0.0)" REPLACE "if (len < 1e-6 || wsum <= 0.0)"
   WHY "an absolute epsilon of a micrometre: a nearly collapsed constraint is not pushed apart")
+# Bonus 4.4 (long-range attachments)
+clothlab_mistake(tether_pushes_out FILE distance.cpp
+  FIND "if (len <= L) return Vec3::Zero();" REPLACE ""
+  WHY "a two-sided tether: a slack one pushes its particle out to the length L")
+clothlab_mistake(tether_to_any_particle FILE distance.cpp
+  FIND "if (w[a] == 0.0 && dist < nearest) {" REPLACE "if (a != i && dist < nearest) {"
+  WHY "anchors each particle to its nearest neighbour, pinned or not")
+clothlab_mistake(tether_tie_highest_index FILE distance.cpp
+  FIND "if (w[a] == 0.0 && dist < nearest) {" REPLACE "if (w[a] == 0.0 && dist <= nearest) {"
+  WHY "of equally near pins takes the last one")
+clothlab_mistake(tether_not_normalised FILE distance.cpp
+  FIND "return -((len - L) / len) * e;" REPLACE "return -(len - L) * e;"
+  WHY "moves along p - a instead of the unit direction: the wrong distance")

@@ -5,6 +5,8 @@
 /// the task sheet is `exercises/04_distance/README.md`. Notation as on the slides:
 /// p1, p2 predicted positions, w1, w2 inverse masses, d rest length, k stiffness in [0, 1].
 #pragma once
+#include <vector>
+
 #include "clothlab/core/types.h"
 
 namespace clothlab {
@@ -51,5 +53,28 @@ Vec3 distanceGradient(const Vec3& p1, const Vec3& p2);
 /// @return        Δp1, Δp2, m
 DistanceCorrection projectDistanceConstraint(const Vec3& p1, const Vec3& p2, double w1, double w2, double d,
                                              double k);
+
+/// Bonus 4.4a — the anchors of long-range attachments (tethers; Kim, Chentanez, Müller 2012), beyond the
+/// slides and optional: every free particle is tied to the pinned particle nearest to it in the rest
+/// state, so that no pull at the free end can take it farther from that pin than it was at rest.
+///
+/// Requirements: anchor[i] is the index of a pinned particle (w = 0) at the least rest distance
+/// |rest_i − rest_a| from particle i, the lowest such index when several are equally near; −1 for a
+/// pinned particle itself and for every particle when none is pinned.
+/// @param rest  rest positions, 3 × N, m
+/// @param w     inverse masses, N, 1/kg (0: pinned)
+/// @return      anchor index per particle, N entries in [−1, N)
+std::vector<int> tetherAnchors(const Matrix3X& rest, const VectorX& w);
+
+/// Bonus 4.4b — one projection of a tether: the one-sided constraint \f$ C(\vec p) = |\vec p - \vec a| - L \le 0 \f$
+/// between a free particle p and its anchor a (pinned, it never moves).
+///
+/// Requirements: a slack tether (|p − a| ≤ L) moves nothing; a taut one moves p straight towards a,
+/// the least distance that makes C = 0 (no more); L = 0 pulls p onto a. Never NaN.
+/// @param p       the free particle's predicted position, m
+/// @param anchor  its anchor's position, m
+/// @param L       the tether's length (the rest distance), m, L ≥ 0
+/// @return        Δp, m: add to p
+Vec3 projectTether(const Vec3& p, const Vec3& anchor, double L);
 
 }  // namespace clothlab
