@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# Derivation tasks state the principle, not the formula; hints nudge first. Checked on exercises/:
+# Derivation tasks state the principle, not the formula; hints nudge first. Checked on exercises/,
+# the lecture decks slides/*.md (both editions, speaker notes included) and docs/*.md:
 #   1. no task sheet (NN_*/README.md), stub (NN_*/*.cpp) or level-1/2 hint (NN_*/hints.json) contains a
 #      key expression of a derivation task's answer (list below: regexes, spacing-tolerant, matched
 #      after Unicode subscripts, superscripts, bold and the signs − · × are written plainly);
 #      only the level-3 hint may give the formula;
-#   2. every level-1 hint is a question (ends with "?") that names a slide ("slide 22", "slides 17-21",
+#   2. no deck or doc contains one either (their LaTeX and Markdown written plainly first: \frac{a}{b}
+#      is a/(b), \vb{p}_1 is p1, \sum is Σ), except the original slides' own formulas: the allow-list
+#      below, each entry exactly as the decks set it (issue #26: "keep the slides' own formulas");
+#   3. every level-1 hint is a question (ends with "?") that names a slide ("slide 22", "slides 17-21",
 #      "slide 'Title'").
-# The list is live: each task's level-3 hint and the reference (solutions/, when present) contain one
-# of its key expressions. Then the check must fail on copies with a key expression planted into a
-# sheet, a stub and a level-2 hint, and with a level-1 hint that is no question or names no slide.
+# The lists are live: each task's level-3 hint and the reference (solutions/, when present) contain one
+# of its key expressions; each allow-list entry is in a deck. Then the check must fail on copies with a
+# key expression planted into a sheet, a stub, a level-2 hint, a slide deck and a doc, and with a
+# level-1 hint that is no question or names no slide.
 # Usage: derivation_hints_check.sh SOURCE_DIR
 set -u
 export LC_ALL=C.UTF-8
@@ -48,26 +53,66 @@ KEYS=$(cat <<'EOF'
 6.4	min\s*\(\s*\|?\s*v_?tL?e?n?\s*\|?\s*,\s*(mu|μ|c\.friction)
 EOF
 )
+# The allow-list: the original slides' own formulas that match a key expression, allowed in slides/*.md
+# and docs/*.md only (never in a sheet, stub or level-1/2 hint). TASK<TAB>FORMULA, exactly as the decks
+# set it (cut after the same normalising, spacing-tolerant). Only what the original slides print:
+#   slide 22 'Distanz-Constraint', Projektion des Constraint: Δp1 and Δp2 for k = 1 (slides/07_distance.md);
+#   slide 23 'Biege-Constraint', [Müller07] appendix A: Δp_i with its printed sign (slides/08_bending.md).
+# Never allowed, the seed does not print them: k' = 1 - (1 - k)^(1/n) (3.2), the general s = C/Σ w|∇C|^2
+# and Δp_i = -k s w_i ∇C (4.3), the q-vectors with their sign fixed (5.1), Δp_i with its sign fixed (5.2).
+ALLOW=$(cat <<'EOF'
+4.3	\Delta\vb{p}_1 = -\frac{w_1}{w_1 + w_2}\,\bigl(|\vb{p}_1 - \vb{p}_2| - d\bigr)\,\frac{\vb{p}_1 - \vb{p}_2}{|\vb{p}_1 - \vb{p}_2|}
+4.3	\Delta\vb{p}_2 = +\frac{w_2}{w_1 + w_2}\,\bigl(|\vb{p}_1 - \vb{p}_2| - d\bigr)\,\frac{\vb{p}_1 - \vb{p}_2}{|\vb{p}_1 - \vb{p}_2|}
+5.2	\Delta\vb{p}_i = -\frac{w_i \sqrt{1 - d^2}\,\bigl(\arccos(d) - \varphi_0\bigr)}{\sum_j w_j |\vb{q}_j|^2}\,\vb{q}_i
+EOF
+)
 SLIDE="(?i)\bslides?\s+([0-9]|'|‘)"
 
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 printf '%s\n' "$KEYS" >"$work/keys"
+printf '%s\n' "$ALLOW" >"$work/allow"
 # hint_levels FILE FIRST LAST: the hints of levels FIRST..LAST, one per line, as TASK<TAB>TEXT.
 hint_levels() { jq -r --argjson a "$2" --argjson b "$3" 'to_entries[] | .key as $k | .value[$a - 1:$b][] | "\($k)\t\(.)"' "$1"; }
-# gives_away LABEL FILE [KEYFILE]: one line per key expression (default: all) found in FILE, after
-# normalising its text to the plain notation of the keys; status 1 if any.
+# gives_away LABEL FILE [KEYFILE [ALLOWFILE]]: one line per key expression (default: all) found in
+# FILE, after normalising its text to the plain notation of the keys; status 1 if any. With ALLOWFILE
+# (decks, docs): LaTeX and Markdown are written plainly too, and the allowed formulas are cut first.
 gives_away() {
   perl -CSD -Mutf8 -e '
-    my ($label, $file, $keys) = @ARGV;
-    local $/; open(my $f, "<", $file) or die "$file: $!"; my $t = <$f>;
-    $t =~ s/\*\*//g; $t =~ tr/₀₁₂₃₄₅₆₇₈₉ᵢⱼₕₛ/0123456789ijhs/; $t =~ s/²/^2/g; $t =~ s/ⁿ/^n/g; $t =~ s/½/1\/2/g;
-    $t =~ s/−/-/g; $t =~ s/·/*/g; $t =~ s/×/ x /g; $t =~ s/\s+/ /g;
+    my ($label, $file, $keys, $allow) = @ARGV;
+    my $br = qr/(\{(?:[^{}]++|(?-1))*+\})/;  # a balanced {...}
+    sub frac { my ($num, $den) = map { substr($_, 1, -1) } @_; $num =~ s/^\s+|\s+$//g;
+               ($num =~ /^[\w\\\x27.]+$/ ? $num : "($num)") . "/($den)" }
+    sub plain {  # TEXT, TEX: the text in the plain notation of the keys
+      my ($t, $tex) = @_;
+      if ($tex) {  # \frac{a}{b} -> a/(b), \vb{p}_1 -> p1, \sum -> Σ, ^{1/n} -> ^1/n, `code` -> code
+        1 while $t =~ s/\\[dt]?frac\s*$br\s*$br/frac($1, $2)/e;
+        my %sym = (Delta => "Δ", nabla => "∇", sum => "Σ", varphi => "φ", phi => "φ", lambda => "λ",
+                   alpha => "α", sqrt => "√", cdot => "·", times => "×", sin => "sin", arccos => "arccos");
+        $t =~ s/\\(Delta|nabla|sum|varphi|phi|lambda|alpha|sqrt|cdot|times|sin|arccos)(?![a-zA-Z])/$sym{$1}/g;
+        $t =~ s/\\(?:vb|mathbf|boldsymbol|bm|vec|hat|tilde|bar|mathrm|text|textbf|operatorname|left|right|[bB]igg?[lr]?)(?![a-zA-Z])//g;
+        $t =~ s/\\(?:q?quad(?![a-zA-Z])|[,;:! ])/ /g; $t =~ s/\\\|/|/g; $t =~ s/[{}\$`]//g;
+      }
+      $t =~ s/\*\*//g; $t =~ tr/₀₁₂₃₄₅₆₇₈₉ᵢⱼₕₛ/0123456789ijhs/; $t =~ s/²/^2/g; $t =~ s/ⁿ/^n/g; $t =~ s/½/1\/2/g;
+      $t =~ s/−/-/g; $t =~ s/·/*/g; $t =~ s/×/ x /g; $t =~ s/\s+/ /g;
+      $t =~ s/_(\w)/$1/g if $tex;
+      return $t;
+    }
+    local $/; open(my $f, "<", $file) or die "$file: $!"; my $t = plain(<$f>, defined $allow);
+    if (defined $allow) {  # cut the allowed formulas, spacing-tolerant
+      open(my $al, "<", $allow) or die "$allow: $!";
+      for (split /\n/, <$al>) {
+        my (undef, $formula) = split /\t/, $_, 2; next unless length($formula // "");
+        (my $p = plain($formula, 1)) =~ s/\s+//g;
+        my $re = join "\\s*", map { quotemeta } split //, $p;
+        $t =~ s/$re/ [allowed] /g;
+      }
+    }
     open(my $k, "<", $keys) or die "$keys: $!"; my $bad = 0;
     for (split /\n/, <$k>) {
       my ($task, $re) = split /\t/, $_, 2;
       if ($t =~ /$re/) { print "$label: prints the answer of derivation task $task (\x27$&\x27, key /$re/)\n"; $bad = 1 }
     }
-    exit $bad' "$1" "$2" "${3:-$work/keys}"
+    exit $bad' "$1" "$2" "${3:-$work/keys}" ${4:+"$4"}
 }
 
 # check TREE: one line per violation, status 1 if any.
@@ -75,6 +120,10 @@ check() {
   local tree=$1 bad=0 f dir task text
   for f in "$tree"/exercises/[0-9][0-9]_*/README.md "$tree"/exercises/[0-9][0-9]_*/*.cpp; do
     gives_away "${f#"$tree"/}" "$f" || bad=1
+  done
+  for f in "$tree"/slides/*.md "$tree"/docs/*.md; do
+    [[ -f $f ]] || continue
+    gives_away "${f#"$tree"/}" "$f" "$work/keys" "$work/allow" || bad=1
   done
   for f in "$tree"/exercises/[0-9][0-9]_*/hints.json; do
     dir=${f%/hints.json}; dir=${dir#"$tree"/}
@@ -102,11 +151,26 @@ for task in $(cut -f1 <<<"$KEYS" | sort -u); do
       && { echo "FAIL: no key expression of task $task matches the reference solutions/${nn}_*/ (update the list in $0)"; fail=1; }
   fi
 done
-check "$root" || { echo "FAIL: a sheet, stub or level-1/2 hint prints a derivation's answer, or a level-1 hint is no question naming a slide (lines above)"; exit 1; }
+# The allow-list is live: each entry is, as written, on a slide (else it is stale: update it with the deck).
+if [[ -d $root/slides ]]; then
+  while IFS=$'\t' read -r task formula; do
+    cat "$root"/slides/*.md | grep -qF -- "$formula" \
+      || { echo "FAIL: the allowed seed formula of task $task is in no deck as written (update the allow-list in $0): $formula"; fail=1; }
+  done <"$work/allow"
+fi
+check "$root" || { echo "FAIL: a sheet, stub, level-1/2 hint, deck or doc prints a derivation's answer, or a level-1 hint is no question naming a slide (lines above)"; exit 1; }
 ((fail == 0)) || exit 1
 
-# The check fails on planted violations, each in a fresh copy of exercises/.
-fresh() { rm -rf "$work/t" && mkdir -p "$work/t" && cp -r "$root/exercises" "$work/t/"; }
+# The check fails on planted violations, each in a fresh copy of exercises/, slides/*.md and docs/*.md.
+fresh() {
+  rm -rf "$work/t" && mkdir -p "$work/t/slides" "$work/t/docs" && cp -r "$root/exercises" "$work/t/" \
+    && cp "$root"/slides/*.md "$work/t/slides/" && cp "$root"/docs/*.md "$work/t/docs/"
+}
+replace_line() {  # replace_line FILE LINE NEW: in the copy, the line LINE (exactly) of FILE becomes NEW
+  OLD=$2 NEW=$3 perl -pi -e 's/^\Q$ENV{OLD}\E$/$ENV{NEW}/' "$work/t/$1"
+  cmp -s "$root/$1" "$work/t/$1" && { echo "FAIL: could not plant into $1, no line '$2' (update this test)"; exit 1; }
+  return 0
+}
 json_set() {  # json_set FILE TASK LEVEL TEXT
   jq --arg t "$2" --argjson l "$3" --arg s "$4" '.[$t][$l] = $s' "$1" >"$1.new" && mv "$1.new" "$1"
 }
@@ -126,5 +190,15 @@ fresh; json_set "$work/t/exercises/06_collision/hints.json" 6.2 0 "Slide 24, 'Ko
 expect_caught "a level-1 hint that is no question" 'level 1 of 6\.2 is not a question'
 fresh; json_set "$work/t/exercises/01_hooke/hints.json" 1.5 0 "Which velocity does the drift use?"
 expect_caught "a level-1 hint without a slide" 'level 1 of 1\.5 names no slide'
+# decks and docs: k' solved on the slide of chapter 6, the general recipe beside the seed's Δp1, Δp2 in
+# chapter 7, the sign-fixed bending correction in the German edition of chapter 8, k' in a doc
+fresh; replace_line slides/06_pbd.md "\$\$(1 - k')^n = 1 - k\$\$" "\$\$(1 - k')^n = 1 - k \\;\\Rightarrow\\; k' = 1 - (1 - k)^{1/n}\$\$"
+expect_caught "k' on the slide 'Stiffness per iteration'" 'slides/06_pbd\.md: prints the answer of derivation task 3\.2'
+fresh; printf '%s\n' '$$s = \frac{C}{\sum_j w_j |\nabla_{\vb{p}_j} C|^2}, \qquad \Delta\vb{p}_i = -k\,s\, w_i \nabla_{\vb{p}_i} C$$' >>"$work/t/slides/07_distance.md"
+expect_caught "the general recipe in chapter 7" 'slides/07_distance\.md: prints the answer of derivation task 4\.3'
+fresh; printf '%s\n' '::: de' '$$\Delta\vb{p}_i = +\,\frac{w_i\,\sin\varphi\,\bigl(\varphi - \varphi_0\bigr)}{\sum_j w_j |\vb{q}_j|^2}\,\vb{q}_i$$' ':::' >>"$work/t/slides/08_bending.md"
+expect_caught "the sign-fixed bending correction in chapter 8 (German)" 'slides/08_bending\.md: prints the answer of derivation task 5\.2'
+fresh; printf '\nThe study uses k_sub = 1 − (1 − k)^(1/substeps).\n' >>"$work/t/docs/pbd_precision.md"
+expect_caught "k' in docs/pbd_precision.md" 'docs/pbd_precision\.md: prints the answer of derivation task 3\.2'
 
-echo "derivation tasks $(cut -f1 <<<"$KEYS" | sort -u | tr '\n' ' ')state principles: $(grep -c . <<<"$KEYS") key expressions, none in a sheet, stub or level-1/2 hint, each task's in its level-3 hint$([[ -d $root/solutions ]] && echo ' and the reference'); every level-1 hint a question naming a slide; 5 planted violations caught"
+echo "derivation tasks $(cut -f1 <<<"$KEYS" | sort -u | tr '\n' ' ')state principles: $(grep -c . <<<"$KEYS") key expressions, none in a sheet, stub, level-1/2 hint, deck or doc (but $(grep -c . <<<"$ALLOW") seed formulas in the decks), each task's in its level-3 hint$([[ -d $root/solutions ]] && echo ' and the reference'); every level-1 hint a question naming a slide; 9 planted violations caught"
