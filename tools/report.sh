@@ -219,7 +219,8 @@ esac
 # ---- the answers table: every field, with whatever keys it has
 say "report $nn: the answers ($ex/answers.json) and the write-up ($ex/writeup.md)"
 table=$(jq -r -L "$HERE" 'include "answers"; html' "$answers") || die "$ex/answers.json: (JSON): cannot read it"
-unset_n=$(jq -L "$HERE" 'include "answers"; [fields[] | to_entries[] | select((.key | IN(nums[])) and .value == null)] | length' "$answers")
+unset_n=$(jq -L "$HERE" 'include "answers"; [fields | to_entries[] | select((.key | IN(nums[])) and .value == null)] | length' "$answers") \
+  || die "$HERE/answers.jq: (file): jq cannot count the numbers not entered"
 ((unset_n == 0)) || say "note: $ex/answers.json: $unset_n numbers not entered yet (null)"
 
 # ---- the write-up: comments out, Markdown without raw HTML (nothing active in the file), formulas as MathML
