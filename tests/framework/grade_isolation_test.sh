@@ -14,9 +14,10 @@ echo 'this line is not C++ ;' >>"$tmp/sub/01_hooke/hooke.cpp"
 "$grader" --kit "$kit" --submission "$tmp/sub" --work "$tmp/work" "$@" >"$tmp/grade.log" 2>&1
 grep -q "DOES NOT COMPILE" "$tmp/grade.log" || { tail -20 "$tmp/grade.log"; fail "the broken stage 01 is not reported"; }
 grep -q "hooke.cpp:[0-9]*:[0-9]*: error" "$tmp/grade.log" || { tail -20 "$tmp/grade.log"; fail "the compiler's message (file:line) is not shown"; }
-# The grader's table: one row per stage, "NN  title  passed / tests  points / max".
+# The grader's table: one row per stage, "NN  title  passed / tests  points / max" (then "+ B bonus"
+# for a stage with bonus tests: cut first).
 awk '
-  /^[0-9][0-9] / { n++; got = $(NF-2); max = $NF
+  /^[0-9][0-9] / { sub(/ *[+] [0-9.]+ bonus *$/, ""); n++; got = $(NF-2); max = $NF
     if ($1 == "01" && got + 0 != 0) { print "stage 01: " got " points, want 0"; bad = 1 }
     if ($1 != "01" && got + 0 != max + 0) { print "stage " $1 ": " got " of " max " points, want all"; bad = 1 } }
   END { if (n < 6) { print "only " n " stages graded"; bad = 1 }; exit bad }' "$tmp/grade.log" \
