@@ -108,11 +108,13 @@ json gradescopeJson(const std::vector<StageResult>& stages, double execution_sec
     // Field names and values as Gradescope's autograder specification names them (see report.h).
     // A bonus test has max_score 0: Gradescope adds its score as extra credit.
     json j;
-    double score = 0, max = 0;
+    double score = 0, max = 0, bonus = 0;
+    bool any_bonus = false;
     json tests = json::array();
     for (const auto& s : stages)
         for (const auto& t : s.tests) {
             score += t.points;
+            if (t.bonus) bonus += t.points, any_bonus = true;
             max += t.bonus ? 0.0 : t.max_points;
             tests.push_back({{"name", "stage " + s.stage + ": " + t.name + (t.bonus ? " (bonus)" : "")},
                              {"name_format", "text"}, {"score", t.points}, {"max_score", t.bonus ? 0.0 : t.max_points},
@@ -120,8 +122,8 @@ json gradescopeJson(const std::vector<StageResult>& stages, double execution_sec
                              {"output", t.passed ? "" : t.message}, {"visibility", "visible"}});
         }
     char total[128];
-    std::snprintf(total, sizeof total, "clothlab: %g / %g points", score, max);
-    std::string output = total;
+    std::snprintf(total, sizeof total, "clothlab: %g / %g points", score - bonus, max);
+    std::string output = total + bonusNote(bonus, any_bonus);
     const std::string status = statusLine(stages);
     if (status != "ok") output += " (" + status + ": every test of such a stage fails with the reason)";
     j["score"] = score;
@@ -143,7 +145,8 @@ std::string mdCell(const std::string& s) {
 
 std::string markdownTable(const std::vector<StageResult>& stages) {
     std::string md = "| stage | title | status | tests passed | points |\n|---|---|---|---:|---:|\n";
-    double pts = 0, max = 0;
+    double pts = 0, max = 0, bonus = 0;
+    bool any_bonus = false;
     char b[128];
     for (const auto& s : stages) {
         std::snprintf(b, sizeof b, " | %d / %zu | %g / %g%s |\n", s.passed(), s.tests.size(), s.points(), s.max_points(),
@@ -151,8 +154,10 @@ std::string markdownTable(const std::vector<StageResult>& stages) {
         md += "| " + s.stage + " | " + mdCell(s.title) + " | " + mdCell(s.status) + b;
         pts += s.points();
         max += s.max_points();
+        bonus += s.bonus();
+        any_bonus = any_bonus || hasBonus(s);
     }
-    std::snprintf(b, sizeof b, "| **total** | | | | **%g / %g** |\n", pts, max);
+    std::snprintf(b, sizeof b, "| **total** | | | | **%g / %g%s** |\n", pts, max, bonusNote(bonus, any_bonus).c_str());
     md += b;
     for (const auto& s : stages) {
         std::string failed;
