@@ -320,6 +320,8 @@ TEST(Bonus4_4_ProjectTether, SlackTetherMovesNothing) {
     EXPECT_EXACT(projectTether(p, a, 0.7).norm(), 0.0) << "a tether of length 0.7 m with its particle 0.5 m from the anchor is "
                                                           "slack: a one-sided constraint C <= 0 that holds moves nothing";
     EXPECT_EXACT(projectTether(a, a, 0.7).norm(), 0.0) << "a particle on its anchor (a tether of 0.7 m): slack, no move, no NaN";
+    EXPECT_EXACT(projectTether(a, a, 0.0).norm(), 0.0) << "a particle on its anchor with a tether of length 0: the "
+                                                          "constraint holds (C = 0), no move, no NaN";
 }
 
 TEST(Bonus4_4_ProjectTether, TautTetherEndsExactlyAtItsLength) {
@@ -331,7 +333,8 @@ TEST(Bonus4_4_ProjectTether, TautTetherEndsExactlyAtItsLength) {
         const Vec3 dp = projectTether(p, a, L);
         const double after = (p + dp - a).norm();
         const Vec3 toward = (a - p).normalized();
-        if (!dp.allFinite() || std::abs(after - L) > 1e-9 * (L + a.norm()) || (dp - dp.dot(toward) * toward).norm() > 1e-9 * dp.norm() ||
+        if (!dp.allFinite() || std::abs(after - L) > 1e-9 * (L + a.norm()) ||
+            (dp - dp.dot(toward) * toward).norm() > 1e-9 * dp.norm() + 1e-12 * (len + a.norm()) ||
             dp.dot(toward) <= 0)
             return testing::AssertionFailure() << "A taut tether (length L = " << L << " m, the particle " << len
                                                << " m from its anchor " << str(a) << ") must move the particle straight towards "
@@ -354,8 +357,11 @@ TEST(Bonus4_4_Tethers, HangingChainStretchesNoFartherThanAtRest) {
     const Matrix3X rest = row(n, 0.05);
     VectorX w = VectorX::Ones(n);
     w[0] = 0.0;
+    const std::vector<int> anchor = tetherAnchors(rest, w);
+    ASSERT_EQ(anchor.size(), static_cast<size_t>(n)) << "tetherAnchors must give one anchor per particle";
+    for (int i = 0; i < n; ++i)
+        ASSERT_TRUE(anchor[i] >= -1 && anchor[i] < n) << "anchor " << i << " is " << anchor[i] << ": not a particle index or -1";
     auto simulate = [&](bool tethers) {
-        const std::vector<int> anchor = tetherAnchors(rest, w);
         Matrix3X x = rest, v = Matrix3X::Zero(3, n);
         double worst = 0.0;  // the largest distance to the pin over the rest distance, over all steps
         const double dt = 1.0 / 60.0;

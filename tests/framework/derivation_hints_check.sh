@@ -97,20 +97,29 @@ gives_away() {
       $t =~ s/_(\w)/$1/g if $tex;
       return $t;
     }
-    local $/; open(my $f, "<", $file) or die "$file: $!"; my $t = plain(<$f>, defined $allow);
-    if (defined $allow) {  # cut the allowed formulas, spacing-tolerant
+    local $/;
+    # LABEL "-" and FILE "@LIST": every "LABEL<TAB>FILE" line of LIST, in one perl (the framework sources)
+    my @items = $file =~ /^@(.*)/s ? do { open(my $l, "<", $1) or die "$1: $!"; map { [split /\t/] } split /\n/, <$l> }
+                                   : ([$label, $file]);
+    my @allowed;
+    if (defined $allow) {  # the allowed formulas, spacing-tolerant
       open(my $al, "<", $allow) or die "$allow: $!";
       for (split /\n/, <$al>) {
         my (undef, $formula) = split /\t/, $_, 2; next unless length($formula // "");
         (my $p = plain($formula, 1)) =~ s/\s+//g;
-        my $re = join "\\s*", map { quotemeta } split //, $p;
-        $t =~ s/$re/ [allowed] /g;
+        push @allowed, join "\\s*", map { quotemeta } split //, $p;
       }
     }
-    open(my $k, "<", $keys) or die "$keys: $!"; my $bad = 0;
-    for (split /\n/, <$k>) {
-      my ($task, $re) = split /\t/, $_, 2;
-      if ($t =~ /$re/) { print "$label: prints the answer of derivation task $task (\x27$&\x27, key /$re/)\n"; $bad = 1 }
+    open(my $k, "<", $keys) or die "$keys: $!"; my @keys = map { [split /\t/, $_, 2] } split /\n/, <$k>;
+    my $bad = 0;
+    for my $item (@items) {
+      my ($lab, $path) = @$item;
+      open(my $f, "<", $path) or die "$path: $!"; my $t = plain(<$f>, defined $allow);
+      $t =~ s/$_/ [allowed] /g for @allowed;
+      for (@keys) {
+        my ($task, $re) = @$_;
+        if ($t =~ /$re/) { print "$lab: prints the answer of derivation task $task (\x27$&\x27, key /$re/)\n"; $bad = 1 }
+      }
     }
     exit $bad' "$1" "$2" "${3:-$work/keys}" ${4:+"$4"}
 }
@@ -124,6 +133,11 @@ check() {
     unchanged "$tree" "$f" && continue
     gives_away "${f#"$tree"/}" "$f" || bad=1
   done
+  : >"$work/framework_list"  # the framework ships in the student copy, sources and all
+  for f in $(find "$tree/framework/include" "$tree/framework/src" \( -name '*.h' -o -name '*.cpp' \) 2>/dev/null | sort); do
+    unchanged "$tree" "$f" || printf '%s\t%s\n' "${f#"$tree"/}" "$f" >>"$work/framework_list"
+  done
+  [[ -s $work/framework_list ]] && { gives_away - "@$work/framework_list" || bad=1; }
   for f in "$tree"/slides/*.md "$tree"/docs/*.md; do
     [[ -f $f ]] || continue
     unchanged "$tree" "$f" && continue
@@ -170,7 +184,7 @@ check "$root" || { echo "FAIL: a sheet, stub, level-1/2 hint, deck or doc prints
 fresh() {
   rm -rf "$work/t" && mkdir -p "$work/t/slides" "$work/t/docs" && cp -r "$root/exercises" "$work/t/" \
     && cp "$root"/slides/*.md "$work/t/slides/" && cp "$root"/docs/*.md "$work/t/docs/"
-}
+}  # (the framework: only the file a plant goes into, below)
 replace_line() {  # replace_line FILE LINE NEW: in the copy, the line LINE (exactly) of FILE becomes NEW
   OLD=$2 NEW=$3 perl -pi -e 's/^\Q$ENV{OLD}\E$/$ENV{NEW}/' "$work/t/$1"
   cmp -s "$root/$1" "$work/t/$1" && { echo "FAIL: could not plant into $1, no line '$2' (update this test)"; exit 1; }
@@ -205,5 +219,8 @@ fresh; printf '%s\n' '::: de' '$$\Delta\vb{p}_i = +\,\frac{w_i\,\sin\varphi\,\bi
 expect_caught "the sign-fixed bending correction in chapter 8 (German)" 'slides/08_bending\.md: prints the answer of derivation task 5\.2'
 fresh; printf '\nThe study uses k_sub = 1 − (1 − k)^(1/substeps).\n' >>"$work/t/docs/pbd_precision.md"
 expect_caught "k' in docs/pbd_precision.md" 'docs/pbd_precision\.md: prints the answer of derivation task 3\.2'
+fresh; mkdir -p "$work/t/framework/src/study" && cp "$root/framework/src/study/precision.cpp" "$work/t/framework/src/study/"
+printf '\ndouble perSubstep(double k, int n) { return 1.0 - std::pow(1.0 - k, 1.0 / n); }\n' >>"$work/t/framework/src/study/precision.cpp"
+expect_caught "k' computed in the framework" 'framework/src/study/precision\.cpp: prints the answer of derivation task 3\.2'
 
-echo "derivation tasks $(cut -f1 <<<"$KEYS" | sort -u | tr '\n' ' ')state principles: $(grep -c . <<<"$KEYS") key expressions, none in a sheet, stub, level-1/2 hint, deck or doc (but $(grep -c . <<<"$ALLOW") seed formulas in the decks), each task's in its level-3 hint$([[ -d $root/solutions ]] && echo ' and the reference'); every level-1 hint a question naming a slide; 9 planted violations caught"
+echo "derivation tasks $(cut -f1 <<<"$KEYS" | sort -u | tr '\n' ' ')state principles: $(grep -c . <<<"$KEYS") key expressions, none in a sheet, stub, level-1/2 hint, framework source, deck or doc (but $(grep -c . <<<"$ALLOW") seed formulas in the decks), each task's in its level-3 hint$([[ -d $root/solutions ]] && echo ' and the reference'); every level-1 hint a question naming a slide; 10 planted violations caught"

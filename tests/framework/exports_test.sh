@@ -3,7 +3,8 @@
 # documentation names:
 #  - Gradescope's results.json (https://gradescope-autograders.readthedocs.io/en/latest/specs/, "Output
 #    format"): top-level score (number), execution_time (seconds), output, stdout_visibility; tests[]
-#    with name, score, max_score (numbers), status "passed"/"failed", output, visibility, name_format.
+#    with name, score, max_score (numbers), status "passed"/"failed", output, visibility, name_format
+#    (a bonus test: max_score 0, its score extra credit).
 #    The scores sum to the top-level score and to clothlab's own JSON; a stage that does not compile
 #    gives each of its tests the compiler's message (file:line: error) as its output.
 #  - ./lab grade --markdown: the table with a row per stage and the total.
@@ -33,7 +34,9 @@ gradescope_fields() {
                  and (.status | IN("passed", "failed")) and (.output | type) == "string"
                  and (.visibility | IN("hidden", "visible", "after_due_date", "after_published"))
                  and (.name_format | IN("text", "html", "simple_format", "md", "ansi"))
-                 and .score >= 0 and .score <= .max_score and ((.status == "passed") == (.score == .max_score)))
+                 and .score >= 0
+                 and if (.name | endswith(" (bonus)")) then .max_score == 0 and ((.status == "passed") == (.score > 0))
+                     else .score <= .max_score and ((.status == "passed") == (.score == .max_score)) end)
          and ((([.tests[].score] | add) - .score) | fabs) < 1e-9' "$1" >/dev/null \
     || fail "$1 lacks a field of Gradescope's format or its score is not the sum of the tests': $(head -c 600 "$1")"
 }

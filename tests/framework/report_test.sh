@@ -57,7 +57,7 @@ if [[ -s $html ]]; then
   grep -qE '(src|href)="[^d#]' "$html" && fail "the report links another file: $(grep -oE '(src|href)="[^d#][^"]*"' "$html" | head -1)"
   grep -q 'wrote .*01_hooke.html (3 of 3 figures' "$tmp/log" || fail "no summary line: $(tail -1 "$tmp/log")"
   grep -q '^==> report 01: ./lab study precision' "$tmp/log" || fail "no progress line per command: $(head -3 "$tmp/log")"
-  ! grep -E '^(jq|pandoc|gnuplot): |error' "$tmp/log" || fail "a tool's error in the log of a report that worked (lines above)"
+  ! grep -E '^(jq|pandoc|gnuplot|error)[: ]|: error' "$tmp/log" || fail "a tool's error in the log of a report that worked (lines above)"
 else
   fail "no $html"
 fi

@@ -88,13 +88,20 @@ void writeJunit(const fs::path& path, const std::vector<StageResult>& stages, co
     std::ofstream out(path);
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" << xmlEscape(prefix.empty() ? "clothlab" : prefix) << "\">\n";
     for (const auto& s : stages) {
+        // a bonus test not earned is skipped, not failed
+        const auto count = [&](bool bonus) {
+            return std::count_if(s.tests.begin(), s.tests.end(), [&](const TestResult& t) { return !t.passed && t.bonus == bonus; });
+        };
         out << "  <testsuite name=\"stage " << s.stage << " " << xmlEscape(s.title) << "\" tests=\"" << s.tests.size()
-            << "\" failures=\"" << s.tests.size() - static_cast<size_t>(s.passed()) << "\">\n";
+            << "\" failures=\"" << count(false) << "\" skipped=\"" << count(true) << "\">\n";
         for (const auto& t : s.tests) {
             out << "    <testcase classname=\"stage" << s.stage << "\" name=\"" << xmlEscape(t.name) << "\">\n"
                 << "      <properties><property name=\"points\" value=\"" << t.points << "\"/>"
-                << "<property name=\"max_points\" value=\"" << t.max_points << "\"/></properties>\n";
-            if (!t.passed)
+                << "<property name=\"max_points\" value=\"" << t.max_points << "\"/>"
+                << (t.bonus ? "<property name=\"bonus\" value=\"true\"/>" : "") << "</properties>\n";
+            if (!t.passed && t.bonus)
+                out << "      <skipped message=\"bonus not earned: " << xmlEscape(firstLines(t.message, 1)) << "\"/>\n";
+            else if (!t.passed)
                 out << "      <failure message=\"" << xmlEscape(firstLines(t.message, 1)) << "\">" << xmlEscape(t.message)
                     << "</failure>\n";
             out << "    </testcase>\n";
@@ -161,13 +168,18 @@ std::string markdownTable(const std::vector<StageResult>& stages) {
     md += b;
     for (const auto& s : stages) {
         std::string failed;
-        int n = 0;
+        int n = 0, unearned = 0;
         if (s.status != "graded") failed = "```\n" + firstLines(s.problem, 12, "") + "\n```\n", n = static_cast<int>(s.tests.size());
         else
             for (const auto& t : s.tests)
-                if (!t.passed) failed += "- `" + t.name + "`\n  ```\n  " + firstLines(t.message, 4, "  ") + "\n  ```\n", ++n;
-        if (n == 0) continue;
+                if (!t.passed) {
+                    failed += "- " + std::string(t.bonus ? "bonus not earned: " : "") + "`" + t.name + "`\n  ```\n  " +
+                              firstLines(t.message, 4, "  ") + "\n  ```\n";
+                    t.bonus ? ++unearned : ++n;
+                }
+        if (n + unearned == 0) continue;
         md += "\n<details><summary>stage " + s.stage + ": " + std::to_string(n) + " failed" +
+              (unearned ? ", " + std::to_string(unearned) + " bonus not earned" : "") +
               (s.status != "graded" ? " (" + s.status + ")" : "") + "</summary>\n\n" + failed + "\n</details>\n";
     }
     return md;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "clothlab/core/input_error.h"
+#include "clothlab/exercise/03_pbd_loop.h"
 #include "clothlab/sim/mass_spring.h"
 #include "clothlab/sim/pbd.h"
 #include "clothlab/sim/run.h"
@@ -103,7 +104,8 @@ Scene positionBasedScene(const Scene& scene, Method method, int iterations, int 
     s.solver.method = method;
     s.solver.iterations = iterations;
     s.solver.substeps = substeps;
-    const auto perSubstep = [substeps](double k) { return k >= 1.0 ? k : 1.0 - std::pow(1.0 - k, 1.0 / substeps); };
+    // the stiffness per substep: n substeps remove what one step with k removed (exercise 3.2)
+    const auto perSubstep = [substeps](double k) { return k >= 1.0 ? k : iterationStiffness(k, substeps); };
     s.pbd.damping = perSubstep(scene.pbd.damping);
     if (method == Method::Pbd) {
         s.constraints.distance.stiffness = perSubstep(scene.constraints.distance.stiffness);

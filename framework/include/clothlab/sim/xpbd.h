@@ -14,10 +14,10 @@
 
 namespace clothlab {
 
-/// The factor f by which XPBD scales a constraint's PBD correction (the stage function at k = 1,
-/// \f$ \Delta\vec p_i^{PBD} = -(C/S)\,w_i\nabla_i C \f$ with \f$ S = \sum_j w_j|\nabla_j C|^2 \f$): XPBD moves
-/// along the same vectors, \f$ \Delta\vec p_i = w_i\nabla_i C\,\Delta\lambda = f\,\Delta\vec p_i^{PBD} \f$, and since
-/// \f$ \sigma = \sum_i |\Delta\vec p_i^{PBD}|^2/w_i = C^2/S \f$ (over the free particles),
+/// The factor f by which XPBD scales a constraint's PBD correction \f$ \Delta\vec p_i^{PBD} \f$ (the stage
+/// function at k = 1, which moves each particle along \f$ w_i\nabla_i C \f$): XPBD moves along the same
+/// vectors, \f$ \Delta\vec p_i = w_i\nabla_i C\,\Delta\lambda = f\,\Delta\vec p_i^{PBD} \f$, and with
+/// \f$ S = \sum_j w_j|\nabla_j C|^2 \f$ and \f$ \sigma = \sum_i |\Delta\vec p_i^{PBD}|^2/w_i = C^2/S \f$ (over the free particles),
 /// \f[ \Delta\lambda = \frac{-C - \tilde\alpha\lambda}{S + \tilde\alpha} = -\frac{(C + \tilde\alpha\lambda)\,\sigma}{C^2 + \tilde\alpha\sigma},
 ///     \qquad f = \frac{(C + \tilde\alpha\lambda)\,C}{C^2 + \tilde\alpha\sigma}. \f]
 /// λ is updated by Δλ. No correction (f = 0, λ unchanged) where the PBD correction is zero (σ = 0:

@@ -74,8 +74,8 @@ struct PrecisionResult {
 
 /// The scene of one position-based run: `method` with `iterations` per substep and `substeps` per
 /// frame at the scene's frame step Δt. PBD's stiffnesses k ∈ [0, 1] and the damping k_damping act once
-/// per (sub)step, so they are converted to k_sub = 1 − (1 − k)^(1/substeps): (1 − k_sub)^substeps = 1 − k,
-/// i.e. the same effect per frame, and every configuration simulates the same cloth (k = 1 stays 1;
+/// per (sub)step, so they are converted to the k_sub of exercise 3.2 (iterationStiffness(k, substeps)),
+/// for which (1 − k_sub)^substeps = 1 − k: the same effect per frame, and every configuration simulates the same cloth (k = 1 stays 1;
 /// XPBD's compliances α are material constants and stay).
 /// @param scene       the base scene (model "cloth")
 /// @param method      Method::Pbd or Method::Xpbd
