@@ -1,7 +1,9 @@
 # The grading kit: everything grading a submission needs from this build, listed in
 # build/grade-kit/kit.json for clothlab-grade (framework/app/grade/submission.h):
 #   - a copy of the public headers only (clothlab/core, clothlab/exercise): a submission is
-#     compiled in a sandbox that sees these and its own files, nothing else of the tree;
+#     compiled in a sandbox that sees these and its own files, nothing else of the tree; beside
+#     them a precompiled header of Eigen and the standard library (grade_kit_precompiled.h), so
+#     that compiling a stage does not parse Eigen again;
 #   - the compiler and the flags this build compiles with (same ABI, same numerics);
 #   - per stage the object files of its graded tests, its reference (solutions/ compiled here, or in the
 #     student copy the objects of framework/reference/, when present)
@@ -21,8 +23,21 @@ string(TOUPPER "${CMAKE_BUILD_TYPE}" _config)
 separate_arguments(_flags UNIX_COMMAND "-std=c++${CMAKE_CXX_STANDARD} ${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_config}}")
 list(JOIN _flags "\", \"" _flags_json)
 
+# The precompiled header, built with the flags the grader compiles submissions with (kit.json's
+# compile_flags): GCC uses a .gch only when the compile matches the one that made it.
+set(_pch "${_kit}/include/clothlab_precompiled.h")
+configure_file("${PROJECT_SOURCE_DIR}/cmake/grade_kit_precompiled.h" "${_pch}" COPYONLY)
+add_custom_command(OUTPUT "${_pch}.gch"
+  COMMAND ${CMAKE_CXX_COMPILER} ${_flags} "-I${_kit}/include"
+          "-isystem$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,;-isystem>"
+          -x c++-header "${_pch}" -o "${_pch}.gch"
+  DEPENDS "${_pch}" ${_public}
+  COMMAND_EXPAND_LISTS
+  COMMENT "the grading kit's precompiled header (Eigen, std)")
+add_custom_target(clothlab_kit_precompiled_header DEPENDS "${_pch}.gch")
+
 set(_stages_json "")
-set(_kit_deps clothlab-grade clothlab_graded_main clothlab_framework clothlab_remote_peer clothlab_remote_client
+set(_kit_deps clothlab_kit_precompiled_header clothlab-grade clothlab_graded_main clothlab_framework clothlab_remote_peer clothlab_remote_client
   clothlab_submission_main)
 foreach(NN IN LISTS CLOTHLAB_STAGES)
   if(NOT TARGET gradedtests_${NN})
@@ -54,6 +69,7 @@ file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
   \"compiler\": \"${CMAKE_CXX_COMPILER}\",
   \"compile_flags\": [\"${_flags_json}\"],
   \"include_dir\": \"${_kit}/include\",
+  \"precompiled_header\": \"clothlab_precompiled.h\",
   \"system_includes\": [\"$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,\", \">\"],
   \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_graded_main>,\", \">\"],
   \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:tinyobjloader::tinyobjloader_double>\", \"$<TARGET_FILE:GTest::gtest>\"],

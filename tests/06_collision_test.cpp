@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "clothlab/exercise/06_collision.h"
+#include "clothlab/sim/sweeps.h"
 #include "test_util.h"
 
 using namespace clothlab;
@@ -67,7 +68,9 @@ void step(Particles& P, const std::vector<AnyCollider>& colliders, double h, dou
         }
     for (int it = 0; it < iterations; ++it) {
         if (extra) extra(p, P.w);
-        for (const auto& c : contacts) p.col(c.i) += projectCollisionConstraint(p.col(c.i), P.w[c.i], h, c);
+        // p_i += projectCollisionConstraint(p_i, w_i, h, c) for every contact c, in order: the solver's
+        // own loop (sim/sweeps.h), which the grader runs in your code's process as one call.
+        projectCollisionSweep(contacts, P.w, h, p);
     }
     P.v = (p - P.x) / dt;
     P.x = p;

@@ -67,6 +67,7 @@ Kit loadKit(const fs::path& file) {
         if (const auto real = fs::canonical(k.compiler, ec); !ec) k.compiler = real.string();
         for (const auto& f : j.at("compile_flags")) k.compile_flags.push_back(f);
         k.include_dir = j.at("include_dir").get<std::string>();
+        k.precompiled_header = j.value("precompiled_header", "");
         k.system_includes = paths(j.at("system_includes"));
         k.main_objects = paths(j.at("main_objects"));
         k.libs = paths(j.at("libs"));
@@ -214,6 +215,7 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
             r.argv = {kit.compiler};
             r.argv.insert(r.argv.end(), kit.compile_flags.begin(), kit.compile_flags.end());
             r.argv.insert(r.argv.end(), {"-fdiagnostics-color=never", "-fmax-errors=10", "-I/kit/include"});
+            if (!kit.precompiled_header.empty()) r.argv.insert(r.argv.end(), {"-include", "/kit/include/" + kit.precompiled_header});
             for (const auto& s : kit.system_includes) r.argv.insert(r.argv.end(), {"-isystem", s.string()});
             r.argv.insert(r.argv.end(), {"-I/submission/" + st.dir, "-c", "/submission/" + st.dir + "/" + u.filename().string(),
                                          "-o", "/out/" + o.filename().string()});
@@ -259,15 +261,17 @@ std::vector<int> usableCpus() {
     return cpus;
 }
 
-/// One test in its own sandboxed process; the verdict comes from the channel (see graded_main.cpp).
-/// With a `server` (the submission process's program) the test process starts it for the
-/// submission's code; test and submission process share one CPU (`cpu`, or any when < 0).
-TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& shown,
-                   const std::string& name, int timeout_s, int cpu, const fs::path& log) {
-    TestResult r;
-    r.name = name;
+/// Runs the tests `names` (in the order given) in one sandboxed test process; what its channel
+/// reported is in the outcome (see graded_main.cpp). With a `server` (the submission process's
+/// program) the test process starts it for the submission's code; test and submission process share
+/// one CPU (`cpu`, or any when < 0). Limits: `timeout_s` CPU seconds per process, three times that
+/// on the wall clock.
+RunOutcome runTests(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& shown,
+                    const std::vector<std::string>& names, int timeout_s, int cpu, const fs::path& log) {
+    std::string filter;
+    for (const auto& n : names) filter += (filter.empty() ? "" : ":") + n;
     SandboxRun run;
-    run.argv = {"/grade/test", "--gtest_filter=" + name, "--clothlab-channel", "--gtest_color=no"};
+    run.argv = {"/grade/test", "--gtest_filter=" + filter, "--clothlab-channel", "--gtest_color=no"};
     run.mounts = {{exe, "/grade/test", false}};
     if (!server.empty()) {
         run.argv.push_back("--clothlab-server=/grade/submission");
@@ -287,7 +291,32 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     run.log = log;
     run.channel = true;
     run.cpu = cpu;
-    const RunOutcome out = runSandboxed(run);
+    return runSandboxed(run);
+}
+
+/// The tests that passed in a run of several: `start NAME`, no failure, `end NAME passed`, in a
+/// process that ran to its end (exit status 0, or GoogleTest's 1 when a test failed). After a crash,
+/// a signal or a timeout none counts: every test is then run alone.
+std::set<std::string> passedIn(const RunOutcome& out) {
+    std::set<std::string> passed;
+    if (out.timed_out || (out.exit_code != 0 && out.exit_code != 1)) return passed;
+    std::istringstream in(out.report);
+    std::string line, current;
+    bool failed = false;
+    while (std::getline(in, line)) {
+        if (line.rfind("start ", 0) == 0) current = line.substr(6), failed = false;
+        else if (line.rfind("fail ", 0) == 0) failed = true;
+        else if (!current.empty() && !failed && line == "end " + current + " passed") passed.insert(current);
+    }
+    return passed;
+}
+
+/// One test in its own sandboxed process (runTests), and its verdict from what the channel reported.
+TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& shown,
+                   const std::string& name, int timeout_s, int cpu, const fs::path& log) {
+    TestResult r;
+    r.name = name;
+    const RunOutcome out = runTests(exe, server, answers, shown, {name}, timeout_s, cpu, log);
     bool started = false, ended_passed = false;
     std::string failures;
     std::istringstream in(out.report);
@@ -305,7 +334,7 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     };
     const bool cpu_limit = by(SIGXCPU) || by(SIGKILL);
     if (out.timed_out) {
-        r.message = "timed out: still running after " + std::to_string(run.timeout_seconds) + " s (waiting forever?)";
+        r.message = "timed out: still running after " + std::to_string(kWallPerCpuSecond * timeout_s) + " s (waiting forever?)";
     } else if (cpu_limit) {
         r.message = "timed out: used more than " + std::to_string(timeout_s) + " s of CPU time (an endless loop?)";
     } else if (!failures.empty()) {
@@ -330,7 +359,10 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     return r;
 }
 
-/// Runs the tests of `points` against exe with `jobs` processes at a time; after two timeouts the rest are not run.
+/// Runs the tests of `points` against exe. First all of them in `jobs` test processes (every
+/// jobs-th test in one): the tests that pass there have passed. Every other test then runs alone in a
+/// process of its own, `jobs` at a time, and its verdict and message come from that run (a crash or
+/// a timeout costs that test only); after two timeouts the rest are not run.
 StageResult runStage(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& server,
                      const fs::path& answers, int timeout_s, int jobs, const fs::path& logs) {
     const json points = loadPoints(points_dir, stage);
@@ -341,17 +373,30 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
     const std::string shown = "exercises/" + file.substr(0, file.find('.')) + "/answers.json";
     const std::vector<TestResult> graded = pointsTests(points);
     s.tests.resize(graded.size());
-    std::atomic<int> timeouts{0};
     fs::create_directories(logs);
     const std::vector<int> cpus = usableCpus();
+    const auto cpuOf = [&](int worker) { return cpus.empty() ? -1 : cpus[static_cast<size_t>(worker) % cpus.size()]; };
+    // 1. Together: one test process per worker.
+    const int groups = std::max(1, std::min(jobs, static_cast<int>(graded.size())));
+    std::vector<std::set<std::string>> passed(groups);
+    parallelFor(groups, groups, [&](int g, int worker) {
+        std::vector<std::string> names;
+        for (size_t i = g; i < graded.size(); i += groups) names.push_back(graded[i].name);
+        const fs::path log = logs / (stage + "_together_" + std::to_string(g) + ".log");
+        passed[g] = passedIn(runTests(exe, server, answers, shown, names, timeout_s, cpuOf(worker), log));
+        fs::remove(log);
+    });
+    // 2. Alone: every test that did not pass together.
+    std::atomic<int> timeouts{0};
     parallelFor(static_cast<int>(graded.size()), jobs, [&](int i, int worker) {
         TestResult r;
-        if (timeouts >= 2) {
-            r.name = graded[i].name;
+        r.name = graded[i].name;
+        if (passed[i % groups].count(r.name)) {
+            r.passed = true;
+        } else if (timeouts >= 2) {
             r.message = "not run: two tests of this stage timed out already";
         } else {
-            const int cpu = cpus.empty() ? -1 : cpus[static_cast<size_t>(worker) % cpus.size()];
-            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
+            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, cpuOf(worker), logs / (stage + "_" + std::to_string(i) + ".log"));
             if (r.message.rfind("timed out", 0) == 0) ++timeouts;
         }
         r.max_points = graded[i].max_points;
