@@ -2,7 +2,7 @@
 # build/grade-kit/kit.json for clothlab-grade (framework/app/grade/submission.h):
 #   - a copy of the public headers only (clothlab/core, clothlab/exercise): a submission is
 #     compiled in a sandbox that sees these and its own files, nothing else of the tree; beside
-#     them a precompiled header of Eigen and the standard library (grade_kit_precompiled.h), so
+#     them a precompiled header of what the stage headers include (grade_kit_precompiled.h), so
 #     that compiling a stage does not parse Eigen again;
 #   - the compiler and the flags this build compiles with (same ABI, same numerics);
 #   - per stage the object files of its graded tests, its reference (solutions/ compiled here, or in the
@@ -30,10 +30,11 @@ configure_file("${PROJECT_SOURCE_DIR}/cmake/grade_kit_precompiled.h" "${_pch}" C
 add_custom_command(OUTPUT "${_pch}.gch"
   COMMAND ${CMAKE_CXX_COMPILER} ${_flags} "-I${_kit}/include"
           "-isystem$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,;-isystem>"
-          -x c++-header "${_pch}" -o "${_pch}.gch"
+          -x c++-header "${_pch}" -o "${_pch}.gch" -MD -MF "${_pch}.d"
   DEPENDS "${_pch}" ${_public}
+  DEPFILE "${_pch}.d"
   COMMAND_EXPAND_LISTS
-  COMMENT "the grading kit's precompiled header (Eigen, std)")
+  COMMENT "the grading kit's precompiled header (types.h, Eigen)")
 add_custom_target(clothlab_kit_precompiled_header DEPENDS "${_pch}.gch")
 
 set(_stages_json "")

@@ -134,7 +134,7 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
     int done = 0, with_writeups = 0;
     const bool tty = ::isatty(2);
     const std::string salt = kit.fingerprint + (o.grade.use_reference ? "ref" : "own");
-    parallelFor(static_cast<int>(entries.size()), o.jobs, [&](int i) {
+    parallelFor(static_cast<int>(entries.size()), o.jobs, [&](int i, int worker) {
         const Entry& e = entries[i];
         // A name for files that no other entry shares: names that clash once made safe ("bob smith",
         // "bob_smith") or appear twice (alice/, alice.zip) get a hash of their file name appended.
@@ -164,6 +164,7 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
                 g.work = dir / "build";
                 g.shared_cache = work / ".shared";
                 g.jobs = 1;
+                g.first_cpu = worker;  // the students graded at once test on different CPUs
                 g.progress = false;
                 try {
                     row.stages = gradeSubmission(kit, root, g);

@@ -2,9 +2,8 @@
 //
 // Run by hand it is plain GoogleTest. Run by the grader (clothlab-grade) with --clothlab-channel,
 // it reports one line per event on file descriptor 3, a pipe the grader opened before exec: a test
-// counts only if the grader reads `start NAME`, no `fail`, then `end NAME passed`, and the process
-// ran to its end (run alone: exit status 0; run with the stage's other tests: 0, or 1 when one of
-// them failed). Standard output and files are never read.
+// counts only if the grader reads `start NAME`, then `end NAME passed`, and the process exits with
+// status 0. Standard output and files are never read.
 //
 // The channel needs no secret: no submission code runs in this process. Linked by the grader, the
 // submission's functions are proxies; its code runs in a second process, started from

@@ -173,6 +173,18 @@ std::mutex& folderLock(const fs::path& dir) {
     return *m;
 }
 
+/// Whether a file is compiled with the kit's precompiled header: not when it defines a macro before
+/// its first #include (EIGEN_... settings, say), which the header, read first, would not see.
+bool usePrecompiledHeader(const Kit& kit, const std::string& source) {
+    static const std::regex directive("^[ \t]*#[ \t]*(include|define|undef)\\b");
+    if (kit.precompiled_header.empty()) return false;
+    std::istringstream in(source);
+    std::smatch m;
+    for (std::string line; std::getline(in, line);)
+        if (std::regex_search(line, m, directive)) return m[1] == "include";
+    return true;
+}
+
 /// Screens and compiles one stage of the submission into work/obj/NN, or into the shared cache
 /// (reused only when the stored files are byte for byte these files).
 Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder, const fs::path& work,
@@ -215,7 +227,7 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
             r.argv = {kit.compiler};
             r.argv.insert(r.argv.end(), kit.compile_flags.begin(), kit.compile_flags.end());
             r.argv.insert(r.argv.end(), {"-fdiagnostics-color=never", "-fmax-errors=10", "-I/kit/include"});
-            if (!kit.precompiled_header.empty()) r.argv.insert(r.argv.end(), {"-include", "/kit/include/" + kit.precompiled_header});
+            if (usePrecompiledHeader(kit, readFile(u))) r.argv.insert(r.argv.end(), {"-include", "/kit/include/" + kit.precompiled_header});
             for (const auto& s : kit.system_includes) r.argv.insert(r.argv.end(), {"-isystem", s.string()});
             r.argv.insert(r.argv.end(), {"-I/submission/" + st.dir, "-c", "/submission/" + st.dir + "/" + u.filename().string(),
                                          "-o", "/out/" + o.filename().string()});
@@ -261,17 +273,15 @@ std::vector<int> usableCpus() {
     return cpus;
 }
 
-/// Runs the tests `names` (in the order given) in one sandboxed test process; what its channel
-/// reported is in the outcome (see graded_main.cpp). With a `server` (the submission process's
-/// program) the test process starts it for the submission's code; test and submission process share
-/// one CPU (`cpu`, or any when < 0). Limits: `timeout_s` CPU seconds per process, three times that
-/// on the wall clock.
-RunOutcome runTests(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& shown,
-                    const std::vector<std::string>& names, int timeout_s, int cpu, const fs::path& log) {
-    std::string filter;
-    for (const auto& n : names) filter += (filter.empty() ? "" : ":") + n;
+/// One test in its own sandboxed process; the verdict comes from the channel (see graded_main.cpp).
+/// With a `server` (the submission process's program) the test process starts it for the
+/// submission's code; test and submission process share one CPU (`cpu`, or any when < 0).
+TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& shown,
+                   const std::string& name, int timeout_s, int cpu, const fs::path& log) {
+    TestResult r;
+    r.name = name;
     SandboxRun run;
-    run.argv = {"/grade/test", "--gtest_filter=" + filter, "--clothlab-channel", "--gtest_color=no"};
+    run.argv = {"/grade/test", "--gtest_filter=" + name, "--clothlab-channel", "--gtest_color=no"};
     run.mounts = {{exe, "/grade/test", false}};
     if (!server.empty()) {
         run.argv.push_back("--clothlab-server=/grade/submission");
@@ -291,32 +301,7 @@ RunOutcome runTests(const fs::path& exe, const fs::path& server, const fs::path&
     run.log = log;
     run.channel = true;
     run.cpu = cpu;
-    return runSandboxed(run);
-}
-
-/// The tests that passed in a run of several: `start NAME`, no failure, `end NAME passed`, in a
-/// process that ran to its end (exit status 0, or GoogleTest's 1 when a test failed). After a crash,
-/// a signal or a timeout none counts: every test is then run alone.
-std::set<std::string> passedIn(const RunOutcome& out) {
-    std::set<std::string> passed;
-    if (out.timed_out || (out.exit_code != 0 && out.exit_code != 1)) return passed;
-    std::istringstream in(out.report);
-    std::string line, current;
-    bool failed = false;
-    while (std::getline(in, line)) {
-        if (line.rfind("start ", 0) == 0) current = line.substr(6), failed = false;
-        else if (line.rfind("fail ", 0) == 0) failed = true;
-        else if (!current.empty() && !failed && line == "end " + current + " passed") passed.insert(current);
-    }
-    return passed;
-}
-
-/// One test in its own sandboxed process (runTests), and its verdict from what the channel reported.
-TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& answers, const std::string& shown,
-                   const std::string& name, int timeout_s, int cpu, const fs::path& log) {
-    TestResult r;
-    r.name = name;
-    const RunOutcome out = runTests(exe, server, answers, shown, {name}, timeout_s, cpu, log);
+    const RunOutcome out = runSandboxed(run);
     bool started = false, ended_passed = false;
     std::string failures;
     std::istringstream in(out.report);
@@ -334,7 +319,7 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     };
     const bool cpu_limit = by(SIGXCPU) || by(SIGKILL);
     if (out.timed_out) {
-        r.message = "timed out: still running after " + std::to_string(kWallPerCpuSecond * timeout_s) + " s (waiting forever?)";
+        r.message = "timed out: still running after " + std::to_string(run.timeout_seconds) + " s (waiting forever?)";
     } else if (cpu_limit) {
         r.message = "timed out: used more than " + std::to_string(timeout_s) + " s of CPU time (an endless loop?)";
     } else if (!failures.empty()) {
@@ -359,12 +344,10 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     return r;
 }
 
-/// Runs the tests of `points` against exe. First all of them in `jobs` test processes (every
-/// jobs-th test in one): the tests that pass there have passed. Every other test then runs alone in a
-/// process of its own, `jobs` at a time, and its verdict and message come from that run (a crash or
-/// a timeout costs that test only); after two timeouts the rest are not run.
+/// Runs the tests of `points` against exe with `jobs` processes at a time, worker w pinned to usable CPU
+/// first_cpu + w; after two timeouts the rest are not run.
 StageResult runStage(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& server,
-                     const fs::path& answers, int timeout_s, int jobs, const fs::path& logs) {
+                     const fs::path& answers, int timeout_s, int jobs, int first_cpu, const fs::path& logs) {
     const json points = loadPoints(points_dir, stage);
     StageResult s;
     s.stage = stage;
@@ -373,30 +356,17 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
     const std::string shown = "exercises/" + file.substr(0, file.find('.')) + "/answers.json";
     const std::vector<TestResult> graded = pointsTests(points);
     s.tests.resize(graded.size());
+    std::atomic<int> timeouts{0};
     fs::create_directories(logs);
     const std::vector<int> cpus = usableCpus();
-    const auto cpuOf = [&](int worker) { return cpus.empty() ? -1 : cpus[static_cast<size_t>(worker) % cpus.size()]; };
-    // 1. Together: one test process per worker.
-    const int groups = std::max(1, std::min(jobs, static_cast<int>(graded.size())));
-    std::vector<std::set<std::string>> passed(groups);
-    parallelFor(groups, groups, [&](int g, int worker) {
-        std::vector<std::string> names;
-        for (size_t i = g; i < graded.size(); i += groups) names.push_back(graded[i].name);
-        const fs::path log = logs / (stage + "_together_" + std::to_string(g) + ".log");
-        passed[g] = passedIn(runTests(exe, server, answers, shown, names, timeout_s, cpuOf(worker), log));
-        fs::remove(log);
-    });
-    // 2. Alone: every test that did not pass together.
-    std::atomic<int> timeouts{0};
     parallelFor(static_cast<int>(graded.size()), jobs, [&](int i, int worker) {
         TestResult r;
-        r.name = graded[i].name;
-        if (passed[i % groups].count(r.name)) {
-            r.passed = true;
-        } else if (timeouts >= 2) {
+        if (timeouts >= 2) {
+            r.name = graded[i].name;
             r.message = "not run: two tests of this stage timed out already";
         } else {
-            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, cpuOf(worker), logs / (stage + "_" + std::to_string(i) + ".log"));
+            const int cpu = cpus.empty() ? -1 : cpus[static_cast<size_t>(first_cpu + worker) % cpus.size()];
+            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
             if (r.message.rfind("timed out", 0) == 0) ++timeouts;
         }
         r.max_points = graded[i].max_points;
@@ -495,7 +465,7 @@ StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, co
     for (const auto& n : names)
         if (!listed.count(n)) die(points["file"].get<std::string>() + ": tests." + n + ": the graded test has no points");
     const fs::path folder = answersFolder(answers, tmp / ("answers_" + stage));
-    return runStage(points_dir, stage, fs::absolute(exe), {}, folder, timeout_seconds, jobs, tmp);
+    return runStage(points_dir, stage, fs::absolute(exe), {}, folder, timeout_seconds, jobs, 0, tmp);
 }
 
 std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, const GradeOptions& o) {
@@ -573,7 +543,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         }
         progress(o.progress, "grading stage " + st.stage + " ...");
         const fs::path answers = answersFolder(folders.at(st.stage) / "answers.json", o.work / "answers" / st.stage);
-        results.push_back(runStage(kit.points_dir, st.stage, exe, serve, answers, o.timeout_seconds, o.jobs, o.work / "logs"));
+        results.push_back(runStage(kit.points_dir, st.stage, exe, serve, answers, o.timeout_seconds, o.jobs, o.first_cpu, o.work / "logs"));
     }
     return results;
 }

@@ -27,7 +27,7 @@ struct Kit {
     std::string compiler;
     std::vector<std::string> compile_flags;
     fs::path include_dir;  ///< a copy of the public headers (clothlab/core, clothlab/exercise) only
-    std::string precompiled_header;  ///< in include_dir, compiled into its .gch: every submission file starts with it ("" none)
+    std::string precompiled_header;  ///< in include_dir, compiled into its .gch: a submission file starts with it ("" none)
     std::vector<fs::path> system_includes;
     std::vector<fs::path> main_objects, libs;
     std::vector<std::string> link_flags;
@@ -51,7 +51,8 @@ struct GradeOptions {
     bool use_reference = true;  ///< the stages not graded link solutions/ (else the submission's own, or the stub)
     std::set<std::string> only;  ///< stages to grade (empty: all)
     int jobs = 1;
-    int timeout_seconds = 30;  ///< CPU seconds per test process (wall clock: 3 times that); after two timeouts of tests run alone a stage's remaining tests are not run
+    int first_cpu = 0;  ///< test worker w runs on the usable CPU number first_cpu + w (a class: one per student graded at once)
+    int timeout_seconds = 30;  ///< CPU seconds per test process (wall clock: 3 times that); after two timeouts a stage's remaining tests are not run
     bool progress = true;      ///< "grading stage 01 ..." on stderr
     fs::path shared_cache;     ///< objects and binaries shared by submissions with identical files (a class)
 };
