@@ -37,6 +37,14 @@ add_custom_command(OUTPUT "${_pch}.gch"
   COMMENT "the grading kit's precompiled header (types.h, Eigen)")
 add_custom_target(clothlab_kit_precompiled_header DEPENDS "${_pch}.gch")
 
+# The grader links with gold where binutils has it (faster than ld for these programs; the figures
+# are in docs/performance.md).
+find_program(CLOTHLAB_GOLD_LINKER ld.gold)
+set(_link_flags "\"-pthread\", \"-fopenmp\"")
+if(CLOTHLAB_GOLD_LINKER)
+  string(APPEND _link_flags ", \"-fuse-ld=gold\"")
+endif()
+
 set(_stages_json "")
 set(_kit_deps clothlab_kit_precompiled_header clothlab-grade clothlab_graded_main clothlab_framework clothlab_remote_peer clothlab_remote_client
   clothlab_submission_main)
@@ -74,7 +82,7 @@ file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
   \"system_includes\": [\"$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,\", \">\"],
   \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_graded_main>,\", \">\"],
   \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:tinyobjloader::tinyobjloader_double>\", \"$<TARGET_FILE:GTest::gtest>\"],
-  \"link_flags\": [\"-pthread\", \"-fopenmp\"],
+  \"link_flags\": [${_link_flags}],
   \"client_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_remote_peer>;$<TARGET_OBJECTS:clothlab_remote_client>,\", \">\"],
   \"server_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_submission_main>;$<TARGET_OBJECTS:clothlab_remote_peer>,\", \">\"],
   \"server_link_flags\": [\"-lseccomp\"],

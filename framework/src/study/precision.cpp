@@ -57,11 +57,11 @@ double constraintCount(const Simulation& sim) {
     return pbd ? static_cast<double>(pbd->distanceLinks().size() + pbd->bendingStencilList().size()) : 0.0;
 }
 
-/// Steps `scene` to T with timing (best of up to 5 repeats within 0.2 s); fills wall, unstable,
+/// Steps `scene` to T with timing (best of up to `repeats` runs within 0.2 s); fills wall, unstable,
 /// error, strain; returns the constraint count of the simulation.
-double timedRun(const Scene& scene, long long steps, const Matrix3X& ref, PrecisionRun& run) {
+double timedRun(const Scene& scene, long long steps, const Matrix3X& ref, int repeats, PrecisionRun& run) {
     double spent = 0.0, count = 0.0;
-    for (int repeat = 0; repeat < 5 && (repeat == 0 || spent < 0.2); ++repeat) {
+    for (int repeat = 0; repeat < std::max(1, repeats) && (repeat == 0 || spent < 0.2); ++repeat) {
         auto sim = makeSimulation(scene);
         const RunResult res = runSimulation(*sim, steps, steps);
         run.wall = repeat == 0 ? res.wall : std::min(run.wall, res.wall);
@@ -179,7 +179,7 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
                     run.steps = stepsFor(o.end_time, scene.solver.dt);
                     run.dt = scene.solver.dt / run.substeps;
                     const Scene s = positionBasedScene(scene, m, run.iterations, run.substeps);
-                    const double n = timedRun(s, run.steps, ref, run);
+                    const double n = timedRun(s, run.steps, ref, o.repeats, run);
                     run.projections = n * run.iterations * run.substeps / scene.solver.dt;
                     r.runs.push_back(run);
                     if (o.progress) o.progress(++done, total, series + " " + std::to_string(b));
@@ -194,7 +194,7 @@ PrecisionResult precisionStudy(const Scene& scene, const PrecisionOptions& o) {
             run.series = method;
             run.steps = stepsFor(o.end_time, *it);
             run.dt = o.end_time / static_cast<double>(run.steps);
-            timedRun(withMethod(scene, m, run.dt), run.steps, ref, run);
+            timedRun(withMethod(scene, m, run.dt), run.steps, ref, o.repeats, run);
             r.runs.push_back(run);
             if (o.progress) o.progress(++done, total, method);
         }

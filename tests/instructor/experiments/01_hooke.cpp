@@ -25,6 +25,7 @@ double studiedOrder(Method method) {
     PrecisionOptions o;
     o.methods = {method};
     o.dt_min = scene.solver.dt / 10, o.dt_max = scene.solver.dt * 10, o.dt_count = 7, o.end_time = 1.0;
+    o.repeats = 1;  // the errors, not the run times, are graded
     return precisionStudy(scene, o).slopes.at(methodName(method));
 }
 
