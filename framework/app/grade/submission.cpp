@@ -185,10 +185,29 @@ bool usePrecompiledHeader(const Kit& kit, const std::string& source) {
     return true;
 }
 
+/// Usable CPU number `index` of this grader (counted modulo their number), or -1 (any) when the
+/// grader cannot read its affinity. Worker w of a stage pins its tests to usableCpu(first_cpu + w).
+int usableCpu(int index) {
+    static const std::vector<int> cpus = [] {
+        std::vector<int> out;
+        cpu_set_t set;
+        if (::sched_getaffinity(0, sizeof set, &set) == 0)
+            for (int c = 0; c < CPU_SETSIZE; ++c)
+                if (CPU_ISSET(c, &set)) out.push_back(c);
+        return out;
+    }();
+    return cpus.empty() ? -1 : cpus[static_cast<size_t>(index) % cpus.size()];
+}
+
+/// Where a submission's compiles and links run: with one job (each student of a class), on the CPU
+/// its tests run on, so that the students graded at once keep to their own CPUs (a compile beside a
+/// test on one CPU slows every call between its two processes); with more jobs, anywhere.
+int buildCpu(const GradeOptions& o) { return o.jobs == 1 ? usableCpu(o.first_cpu) : -1; }
+
 /// Screens and compiles one stage of the submission into work/obj/NN, or into the shared cache
 /// (reused only when the stored files are byte for byte these files).
 Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder, const fs::path& work,
-                      const fs::path& shared) {
+                      const fs::path& shared, int cpu) {
     Compiled c;
     const fs::path src = work / "src" / st.dir;
     const auto files = copySources(folder, src, &c.problem);
@@ -235,6 +254,7 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
             r.limits.cpu_seconds = 120;
             r.limits.processes = 16;
             r.timeout_seconds = 180;
+            r.cpu = cpu;
             r.log = work / ("compile_" + st.stage + ".log");
             const RunOutcome out = runSandboxed(r);
             if (out.exit_code != 0 || !fs::exists(o)) {
@@ -261,16 +281,6 @@ std::string unescape(const std::string& s) {
         else r += s[i];
     }
     return r;
-}
-
-/// The CPUs this grader may use; worker w of a stage pins its tests to cpus[w % size].
-std::vector<int> usableCpus() {
-    std::vector<int> cpus;
-    cpu_set_t set;
-    if (::sched_getaffinity(0, sizeof set, &set) == 0)
-        for (int c = 0; c < CPU_SETSIZE; ++c)
-            if (CPU_ISSET(c, &set)) cpus.push_back(c);
-    return cpus;
 }
 
 /// One test in its own sandboxed process; the verdict comes from the channel (see graded_main.cpp).
@@ -358,15 +368,13 @@ StageResult runStage(const fs::path& points_dir, const std::string& stage, const
     s.tests.resize(graded.size());
     std::atomic<int> timeouts{0};
     fs::create_directories(logs);
-    const std::vector<int> cpus = usableCpus();
     parallelFor(static_cast<int>(graded.size()), jobs, [&](int i, int worker) {
         TestResult r;
         if (timeouts >= 2) {
             r.name = graded[i].name;
             r.message = "not run: two tests of this stage timed out already";
         } else {
-            const int cpu = cpus.empty() ? -1 : cpus[static_cast<size_t>(first_cpu + worker) % cpus.size()];
-            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, cpu, logs / (stage + "_" + std::to_string(i) + ".log"));
+            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, usableCpu(first_cpu + worker), logs / (stage + "_" + std::to_string(i) + ".log"));
             if (r.message.rfind("timed out", 0) == 0) ++timeouts;
         }
         r.max_points = graded[i].max_points;
@@ -422,6 +430,7 @@ fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const 
     r.limits.processes = 16;
     r.limits.file_size = 512LL << 20;
     r.timeout_seconds = 180;
+    r.cpu = buildCpu(o);
     r.log = o.work / ("link_" + name + ".log");
     const RunOutcome out = runSandboxed(r);
     if (out.exit_code != 0 || !fs::exists(exe)) {
@@ -483,7 +492,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
     parallelFor(static_cast<int>(todo.size()), o.jobs, [&](int i) {
         const KitStage& st = *todo[i];
         progress(o.progress, "compiling stage " + st.stage + " (" + st.dir + ")");
-        Compiled c = compileStage(kit, st, folders.at(st.stage), o.work, o.shared_cache);
+        Compiled c = compileStage(kit, st, folders.at(st.stage), o.work, o.shared_cache, buildCpu(o));
         std::lock_guard<std::mutex> lock(m);
         compiled[st.stage] = std::move(c);
     });
