@@ -100,10 +100,41 @@ if [[ $size == full ]]; then
 fi
 
 # --- grade and compare ----------------------------------------------------------------------------
+# While the small class is graded, the CPUs each test and compile may run on, read from outside every
+# 0.1 s (/proc/PID/status; docs/grading.md, "run"): the test's process ("test", started by bwrap) and
+# its submission process ("submission", started by the test) on one CPU, the same one; the compiler
+# (cc1plus) on one CPU; with two CPUs or more, the students graded at once test on different CPUs, so
+# both are used. Not in the full run, which this script times.
+watch_cpus() {
+  local poll=0
+  while [[ -e $tmp/grading ]]; do
+    poll=$((poll + 1))
+    grep -s -e '^Name:' -e '^PPid:' -e '^Cpus_allowed_list:' /proc/[0-9]*/status |
+      awk -v poll=$poll -F'\t' '{ split($1, p, "/"); sub(/:$/, "", $1)
+                                  if ($1 ~ /Name$/) name[p[3]] = $2; else if ($1 ~ /PPid$/) ppid[p[3]] = $2; else cpus[p[3]] = $2 }
+                                END { for (q in name)
+                                        if (name[q] == "test" && name[ppid[q]] == "bwrap" || name[q] == "submission" && name[ppid[q]] == "test" ||
+                                            name[q] == "cc1plus")
+                                          print poll, q, name[q], cpus[q], cpus[ppid[q]] }'
+    sleep 0.1
+  done >"$tmp/cpus.txt"
+}
+if [[ $size != full ]]; then touch "$tmp/grading"; watch_cpus & watcher=$!; fi
 start=$(date +%s)
 # Relative --class and --out, as an instructor types them (the class's build links from other folders).
 (cd "$tmp" && "$grader" --kit "$kit" --class "${class#"$tmp"/}" --out out "${only[@]}") >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the class failed"; }
 secs=$(( $(date +%s) - start ))
+if [[ $size != full ]]; then
+  rm -f "$tmp/grading"; wait "$watcher"
+  [[ -s $tmp/cpus.txt ]] || fail "no test process was seen while the class was graded (/proc)"
+  awk '$3 != "submission" && $4 !~ /^[0-9]+$/ { print "a " $3 " process (pid " $2 ") may run on CPUs " $4 ", not on one"; bad = 1 }
+       $3 == "submission" && $4 != $5 { print "a submission process (pid " $2 ") may run on CPUs " $4 ", its test on " $5; bad = 1 }
+       END { exit bad }' "$tmp/cpus.txt" || fail "the tests or compiles do not keep to one CPU (lines above)"
+  used=$(awk '$3 == "test" { print $4 }' "$tmp/cpus.txt" | sort -u | tr '\n' ' ')
+  if (($(nproc) >= 2)); then
+    [[ $(wc -w <<<"$used") -ge 2 ]] || fail "every test of the class ran on CPU $used: the two students graded at once must test on different CPUs"
+  fi
+fi
 book=$tmp/out/gradebook.csv
 [[ -f $book ]] || fail "no gradebook"
 bad=0 rows=0
@@ -144,4 +175,5 @@ cp "$book" "$tmp/first.csv"
 "$grader" --kit "$kit" --class "$class" --out "$tmp/out" "${only[@]}" >"$tmp/grade2.log" 2>&1 || fail "second run"
 cmp -s "$book" "$tmp/first.csv" || fail "the second run wrote another gradebook"
 [[ $(grep -c "unchanged, not regraded" "$tmp/grade2.log") -eq $n ]] || { tail "$tmp/grade2.log"; fail "the second run regraded unchanged submissions"; }
+[[ $size == full ]] || echo "every test and compile process kept to one CPU, each submission process to its test's; the tests used CPUs $used"
 echo "class of $n graded (stages${graded% }) in ${secs} s ($(nproc) cores): gradebook (and its Moodle and Canvas forms), feedback and JUnit per student match the expected points; a rerun regrades nothing"
