@@ -101,7 +101,7 @@ fi
 
 # --- grade and compare ----------------------------------------------------------------------------
 # While the small class is graded, the CPUs each test and compile may run on, read from outside every
-# 0.1 s (/proc/PID/status; docs/grading.md, "run"): the test's process ("test", started by bwrap) and
+# 0.5 s (/proc/PID/status; docs/grading.md, "run"): the test's process ("test", started by bwrap) and
 # its submission process ("submission", started by the test) on one CPU, the same one; the compiler
 # (cc1plus) on one CPU; with two CPUs or more, the students graded at once test on different CPUs, so
 # both are used. Not in the full run, which this script times.
@@ -116,7 +116,7 @@ watch_cpus() {
                                         if (name[q] == "test" && name[ppid[q]] == "bwrap" || name[q] == "submission" && name[ppid[q]] == "test" ||
                                             name[q] == "cc1plus")
                                           print poll, q, name[q], cpus[q], cpus[ppid[q]] }'
-    sleep 0.1
+    sleep 0.5  # a poll reads every process's status: about 40 ms of CPU here
   done >"$tmp/cpus.txt"
 }
 if [[ $size != full ]]; then touch "$tmp/grading"; watch_cpus & watcher=$!; fi
