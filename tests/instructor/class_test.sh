@@ -110,19 +110,22 @@ watch_cpus() {
   while [[ -e $tmp/grading ]]; do
     poll=$((poll + 1))
     grep -s -e '^Name:' -e '^PPid:' -e '^Cpus_allowed_list:' /proc/[0-9]*/status |
-      awk -v poll=$poll -F'\t' '{ split($1, p, "/"); sub(/:$/, "", $1)
+      awk -v poll=$poll -v top="$(cat "$tmp/grading")" -F'\t' '{ split($1, p, "/"); sub(/:$/, "", $1)
                                   if ($1 ~ /Name$/) name[p[3]] = $2; else if ($1 ~ /PPid$/) ppid[p[3]] = $2; else cpus[p[3]] = $2 }
                                 END { for (q in name)
-                                        if (name[q] == "test" && name[ppid[q]] == "bwrap" || name[q] == "submission" && name[ppid[q]] == "test" ||
-                                            name[q] == "cc1plus")
-                                          print poll, q, name[q], cpus[q], cpus[ppid[q]] }'
+                                        { mine = 0; for (a = ppid[q]; a != "" && a > 1 && !mine; a = ppid[a]) mine = a == top  # under this grader only
+                                          if (mine && (name[q] == "test" && name[ppid[q]] == "bwrap" || name[q] == "submission" && name[ppid[q]] == "test" ||
+                                              name[q] == "cc1plus")) print poll, q, name[q], cpus[q], cpus[ppid[q]] }
+}'
     sleep 0.5  # a poll reads every process's status: about 40 ms of CPU here
   done >"$tmp/cpus.txt"
 }
-if [[ $size != full ]]; then touch "$tmp/grading"; watch_cpus & watcher=$!; fi
 start=$(date +%s)
 # Relative --class and --out, as an instructor types them (the class's build links from other folders).
-(cd "$tmp" && "$grader" --kit "$kit" --class "${class#"$tmp"/}" --out out "${only[@]}") >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the class failed"; }
+(cd "$tmp" && "$grader" --kit "$kit" --class "${class#"$tmp"/}" --out out "${only[@]}") >"$tmp/grade.log" 2>&1 &
+gpid=$!
+if [[ $size != full ]]; then echo "$gpid" >"$tmp/grading"; watch_cpus & watcher=$!; fi
+wait "$gpid" || { tail -20 "$tmp/grade.log"; fail "grading the class failed"; }
 secs=$(( $(date +%s) - start ))
 if [[ $size != full ]]; then
   rm -f "$tmp/grading"; wait "$watcher"
