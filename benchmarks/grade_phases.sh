@@ -5,11 +5,12 @@
 #
 # Grades solutions/ (all seven stages) with `clothlab-grade --jobs 1` in a fresh work folder, as a
 # class grades each student (one job; --class runs two students at once), and reads the times off the
-# grader's progress lines ("compiling stage", "linking stage", "grading stage"). Two kits, interleaved
+# grader's progress lines (it compiles every stage, then links every stage, then runs all their tests:
+# "compiling stage", "linking stage", "grading stages"). Two kits, interleaved
 # round by round: the build's kit as it is, and a copy that links with the default linker (ld.bfd)
 # instead of gold (nothing else differs: same objects, headers and flags). Prints per kit the median
-# over the rounds of: compile (all seven stages), link (the two programs of each stage, summed), tests
-# (every stage's tests, summed) and the whole grading. Not covered: building the kit, a class's
+# over the rounds of: compile (all seven stages), link (the two programs of each stage), tests (every
+# stage's tests) and the whole grading. Not covered: building the kit, a class's
 # shared cache (a class links each stage's test program once for all students).
 set -euo pipefail
 build=${1:-build}
@@ -32,9 +33,9 @@ phases() {
   "$build/bin/clothlab-grade" --kit "$1" --submission solutions --work "$work" --jobs 1 --quiet 2>&1 >/dev/null |
     while IFS= read -r line; do echo "$(date +%s.%N) $line"; done >"$tmp/progress.txt"
   awk -v start="$start" -v end="$(date +%s.%N)" '
-    / linking stage / { if (!linking) compile = $1 - start; linking = 1; if (graded) tests += $1 - graded; link_from = $1 }
-    / grading stage / { link += $1 - link_from; graded = $1 }
-    END { tests += end - graded; printf "%.2f %.2f %.2f %.2f\n", compile, link, tests, end - start }' "$tmp/progress.txt"
+    / linking stage / { if (!linked) linked = $1 }
+    / grading stages? / { if (!graded) graded = $1 }
+    END { printf "%.2f %.2f %.2f %.2f\n", linked - start, graded - linked, end - graded, end - start }' "$tmp/progress.txt"
 }
 
 for ((r = 1; r <= rounds; r++)); do

@@ -354,35 +354,54 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     return r;
 }
 
-/// Runs the tests of `points` against exe with `jobs` processes at a time, worker w pinned to usable CPU
-/// first_cpu + w; after two timeouts the rest are not run.
-StageResult runStage(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& server,
-                     const fs::path& answers, int timeout_s, int jobs, int first_cpu, const fs::path& logs) {
-    const json points = loadPoints(points_dir, stage);
-    StageResult s;
-    s.stage = stage;
-    s.title = points["title"];
-    const std::string file = fs::path(points["file"].get<std::string>()).filename().string();  // NN_name.points.json
-    const std::string shown = "exercises/" + file.substr(0, file.find('.')) + "/answers.json";
-    const std::vector<TestResult> graded = pointsTests(points);
-    s.tests.resize(graded.size());
-    std::atomic<int> timeouts{0};
+/// One graded stage, ready to run: its test program, the submission process's program ("" none:
+/// the self-checks) and the folder with the answers its experiments read.
+struct StageRun {
+    std::string stage;
+    fs::path exe, server, answers;
+};
+
+/// Runs the tests of every stage in one queue (the stages in order, each stage's tests in its points
+/// file's order), `jobs` processes at a time, worker w pinned to usable CPU first_cpu + w: a worker
+/// done with one stage goes on with the next, so no CPU idles while another runs a stage's longest
+/// test. After two timeouts in a stage, its remaining tests are not run.
+std::vector<StageResult> runStages(const fs::path& points_dir, const std::vector<StageRun>& stages, int timeout_s, int jobs,
+                                   int first_cpu, const fs::path& logs) {
+    struct Queued {
+        size_t stage, index;  // the test's place in out
+        TestResult graded;    // its name and points
+    };
+    std::vector<StageResult> out(stages.size());
+    std::vector<std::string> shown(stages.size());  // the answers file as the student knows it
+    std::vector<Queued> queue;
+    for (size_t s = 0; s < stages.size(); ++s) {
+        const json points = loadPoints(points_dir, stages[s].stage);
+        out[s].stage = stages[s].stage;
+        out[s].title = points["title"];
+        const std::string file = fs::path(points["file"].get<std::string>()).filename().string();  // NN_name.points.json
+        shown[s] = "exercises/" + file.substr(0, file.find('.')) + "/answers.json";
+        for (const TestResult& t : pointsTests(points)) queue.push_back({s, out[s].tests.size(), t}), out[s].tests.emplace_back();
+    }
+    std::unique_ptr<std::atomic<int>[]> timeouts(new std::atomic<int>[stages.size()]());
     fs::create_directories(logs);
-    parallelFor(static_cast<int>(graded.size()), jobs, [&](int i, int worker) {
+    parallelFor(static_cast<int>(queue.size()), jobs, [&](int i, int worker) {
+        const Queued& q = queue[static_cast<size_t>(i)];
+        const StageRun& run = stages[q.stage];
         TestResult r;
-        if (timeouts >= 2) {
-            r.name = graded[i].name;
+        if (timeouts[q.stage] >= 2) {
+            r.name = q.graded.name;
             r.message = "not run: two tests of this stage timed out already";
         } else {
-            r = runTest(exe, server, answers, shown, graded[i].name, timeout_s, usableCpu(first_cpu + worker), logs / (stage + "_" + std::to_string(i) + ".log"));
-            if (r.message.rfind("timed out", 0) == 0) ++timeouts;
+            r = runTest(run.exe, run.server, run.answers, shown[q.stage], q.graded.name, timeout_s, usableCpu(first_cpu + worker),
+                        logs / (run.stage + "_" + std::to_string(q.index) + ".log"));
+            if (r.message.rfind("timed out", 0) == 0) ++timeouts[q.stage];
         }
-        r.max_points = graded[i].max_points;
-        r.bonus = graded[i].bonus;
+        r.max_points = q.graded.max_points;
+        r.bonus = q.graded.bonus;
         r.points = r.passed ? r.max_points : 0.0;
-        s.tests[i] = r;
+        out[q.stage].tests[q.index] = r;
     });
-    return s;
+    return out;
 }
 
 /// A folder holding a copy of the answers file (the graded experiments' numbers), or an empty
@@ -474,7 +493,7 @@ StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, co
     for (const auto& n : names)
         if (!listed.count(n)) die(points["file"].get<std::string>() + ": tests." + n + ": the graded test has no points");
     const fs::path folder = answersFolder(answers, tmp / ("answers_" + stage));
-    return runStage(points_dir, stage, fs::absolute(exe), {}, folder, timeout_seconds, jobs, 0, tmp);
+    return runStages(points_dir, {{stage, fs::absolute(exe), {}, folder}}, timeout_seconds, jobs, 0, tmp).front();
 }
 
 std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, const GradeOptions& o) {
@@ -496,8 +515,10 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         std::lock_guard<std::mutex> lock(m);
         compiled[st.stage] = std::move(c);
     });
-    // 2. Link and run each graded stage.
+    // 2. Link each graded stage's two programs.
     std::vector<StageResult> results;
+    std::vector<StageRun> runs;
+    std::vector<size_t> ran_at;  // where each run's result goes in results
     for (const auto& st : kit.stages) {
         if (!o.only.empty() && !o.only.count(st.stage)) continue;
         if (!folders.count(st.stage)) {
@@ -550,10 +571,16 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
             results.push_back(ungradedStage(kit.points_dir, st.stage, "does not link", problem));
             continue;
         }
-        progress(o.progress, "grading stage " + st.stage + " ...");
-        const fs::path answers = answersFolder(folders.at(st.stage) / "answers.json", o.work / "answers" / st.stage);
-        results.push_back(runStage(kit.points_dir, st.stage, exe, serve, answers, o.timeout_seconds, o.jobs, o.first_cpu, o.work / "logs"));
+        runs.push_back({st.stage, exe, serve, answersFolder(folders.at(st.stage) / "answers.json", o.work / "answers" / st.stage)});
+        ran_at.push_back(results.size());
+        results.emplace_back();
     }
+    // 3. Run the tests of every linked stage.
+    std::string names;
+    for (const auto& r : runs) names += " " + r.stage;
+    if (!runs.empty()) progress(o.progress, "grading stage" + std::string(runs.size() > 1 ? "s" : "") + names + " ...");
+    std::vector<StageResult> ran = runStages(kit.points_dir, runs, o.timeout_seconds, o.jobs, o.first_cpu, o.work / "logs");
+    for (size_t i = 0; i < ran.size(); ++i) results[ran_at[i]] = std::move(ran[i]);
     return results;
 }
 
