@@ -167,7 +167,31 @@ TEST(Threads, AdaptiveTeamProbesAtOnceWhenTheCurrentSizeGetsSlower) {
     team.record(3.0);
     EXPECT_EQ(team.threads(), 1) << "a probe right after the average passes one thread's";
     team.record(2.0);  // the probe wins (2 s < 0.95 · 2.16 s)
+    EXPECT_EQ(team.threads(), 1) << "a second probe";
+    EXPECT_EQ(team.switches(), 0);
+    team.record(2.0);  // wins too: one thread is current
     EXPECT_EQ(team.threads(), 1);
+    EXPECT_EQ(team.switches(), 1);
+}
+
+// One lucky probe (the neighbour paused for one unit) does not switch the team: the probe after it
+// loses, and the team stays, probing again only after the (doubled) interval.
+TEST(Threads, AdaptiveTeamIgnoresOneLuckyProbe) {
+    const DefaultThreads two(2);
+    AdaptiveTeam team(0);
+    drive(team, 300, [](int size) { return size == 1 ? 1.0 : 5.0; });  // busy: one thread is current
+    ASSERT_EQ(team.threads(), 1);
+    const long switches = team.switches();
+    while (team.threads() == 1) team.record(1.0);
+    team.record(0.5);  // the probe of two threads: lucky
+    ASSERT_EQ(team.threads(), 2) << "a second probe";
+    team.record(5.0);  // loses
+    EXPECT_EQ(team.threads(), 1);
+    EXPECT_EQ(team.switches(), switches);
+    for (int k = 0; k < AdaptiveTeam::kLongestInterval - 1; ++k) {
+        team.record(1.0);
+        ASSERT_EQ(team.threads(), 1) << "no probe before the interval is over, unit " << k;
+    }
 }
 
 TEST(Threads, AdaptiveTeamSwitchesOnlyForTheMargin) {
@@ -180,6 +204,54 @@ TEST(Threads, AdaptiveTeamSwitchesOnlyForTheMargin) {
     // 10 % faster: it switches.
     drive(team, 200, [](int size) { return size == 1 ? 0.9 : 1.0; });
     EXPECT_EQ(team.threads(), 1);
+}
+
+// A probe stops once it cannot win (real units, timed with sleeps; no speed is asserted, only which
+// size the loops got): one thread is current, a loop takes 0.5 ms on one thread and 20 ms on two, so a
+// whole probe of two threads would take 200 ms. Its first loops run on two threads until it has used
+// (1 - kMargin) of one thread's time, then the rest on one thread; the team stays on one thread. When
+// two threads get fast, a probe runs whole and wins.
+TEST(Threads, AProbeStopsOnceItCannotWinAndRunsWholeWhenItWins) {
+    const DefaultThreads two(2);
+    AdaptiveTeam team(0);
+    drive(team, 200, [](int size) { return size == 1 ? 0.010 : 0.100; });  // made up: T̄ = 10 ms on one thread
+    ASSERT_EQ(team.threads(), 1);
+    const long switches = team.switches();
+    // One unit of 10 loops; returns how many of them got two threads.
+    const auto unit = [&](double msOnOne, double msOnTwo) {
+        const auto u = team.unit();
+        int onTwo = 0;
+        for (int k = 0; k < 10; ++k) {
+            const bool both = teamThreads(2) == 2;
+            onTwo += both;
+            std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(both ? msOnTwo : msOnOne));
+        }
+        return onTwo;
+    };
+    int probes = 0;
+    for (int k = 0; k < 3 * AdaptiveTeam::kLongestInterval && probes < 2; ++k) {
+        const bool probe = team.threads() == 2;
+        const int onTwo = unit(0.5, 20.0);
+        if (!probe) {
+            EXPECT_EQ(onTwo, 0) << "unit " << k << " on one thread";
+            continue;
+        }
+        ++probes;
+        EXPECT_GE(onTwo, 1) << "the probe starts on two threads";
+        EXPECT_LE(onTwo, 3) << "the probe went on after it could no longer win (a loop on two threads takes 20 ms, one thread's whole unit about 5–10 ms)";
+        EXPECT_EQ(team.threads(), 1) << "the probe lost";
+    }
+    EXPECT_EQ(probes, 2) << "probes come at least every kLongestInterval units";
+    EXPECT_EQ(team.switches(), switches);
+    // Two threads fast now (0.05 ms a loop): the next probe runs all 10 loops on two threads and wins.
+    for (int k = 0; k < 3 * AdaptiveTeam::kLongestInterval && team.threads() == 1; ++k) unit(0.5, 0.05);
+    ASSERT_EQ(team.threads(), 2) << "a probe of two threads";
+    EXPECT_EQ(unit(0.5, 0.05), 10) << "a winning probe is not cut";
+    EXPECT_EQ(team.switches(), switches) << "one winning probe does not switch";
+    ASSERT_EQ(team.threads(), 2) << "a second probe follows";
+    EXPECT_EQ(unit(0.5, 0.05), 10);
+    EXPECT_EQ(team.switches(), switches + 1) << "two winning probes switch";
+    EXPECT_EQ(team.threads(), 2);
 }
 
 // The default solver.threads = 0 with two cores: the team switches between one and two threads while

@@ -127,6 +127,16 @@ private:
 
 thread_local int teamCap = INT_MAX;  // the innermost TeamCap of this thread
 std::atomic<int> defaultOverride{0};  // setDefaultThreads()
+
+/// The probe running on this thread (an AdaptiveTeam::Unit), as teamThreads() sees it: its loops use
+/// `size` threads until `until`, then `fallback` (the current size); it counts them.
+struct ProbeLimit {
+    bool active = false;
+    int size = 1, fallback = 1;
+    Clock::time_point until{}, cutAt{};  // cutAt: when the first loop found `until` passed (else zero)
+    long loops = 0, before = 0;          // loops the unit started, and those with `size` threads
+};
+thread_local ProbeLimit probeLimit;
 }  // namespace
 
 void runShares(int threads, const Share& share) {
@@ -135,7 +145,18 @@ void runShares(int threads, const Share& share) {
     helpers.run(threads, share);
 }
 
-int teamThreads(int threads) { return std::max(1, std::min(threads, teamCap)); }
+int teamThreads(int threads) {
+    int cap = teamCap;
+    if (ProbeLimit& p = probeLimit; p.active) {
+        ++p.loops;
+        if (p.cutAt == Clock::time_point{}) {
+            if (const auto now = Clock::now(); now < p.until) ++p.before;
+            else p.cutAt = now;
+        }
+        cap = std::min(cap, p.cutAt == Clock::time_point{} ? p.size : p.fallback);
+    }
+    return std::max(1, std::min(threads, cap));
+}
 
 void forEachShare(int count, int threads, int minParallel, const std::function<void(int begin, int end)>& each) {
     const int n = teamThreads(threads);
@@ -176,7 +197,14 @@ void AdaptiveTeam::record(double seconds) {
     }
     const double keep = 1.0 - kMargin;  // the other size must be faster by the margin
     if (probe) {  // the other size just ran: keep the faster
-        if (mean_[other] < keep * mean_[now_]) {
+        const bool won = mean_[other] < keep * mean_[now_];
+        if (won && !confirmed_) {  // won once: one more unit of that size decides
+            confirmed_ = true;
+            probing_ = 1;
+            return;
+        }
+        confirmed_ = false;
+        if (won) {
             now_ = other;
             ++switches_;
             interval_ = kFirstInterval;
@@ -189,8 +217,27 @@ void AdaptiveTeam::record(double seconds) {
     if (--untilProbe_ <= 0 || keep * mean_[now_] > mean_[other]) probing_ = 1;
 }
 
-AdaptiveTeam::Unit::Unit(AdaptiveTeam& team) : team_(team), cap_(team.threads()), start_(Clock::now()) {}
+AdaptiveTeam::Unit::Unit(AdaptiveTeam& team)
+    : team_(team),
+      probe_(team.adaptive_ && team.probing_ && team.counted_[team.now_] > 0 && !probeLimit.active),  // a probe with a time to beat
+      cap_(probe_ ? team.most() : team.threads()),  // a probe's loops: probeLimit
+      start_(Clock::now()) {
+    if (!probe_) return;
+    const double beat = (1.0 - kMargin) * team.mean_[team.now_];  // the time a probe must beat, s
+    probeLimit = {true, team.threads(), team.size_[team.now_],
+                  start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(beat)), {}, 0, 0};
+}
 
-AdaptiveTeam::Unit::~Unit() { team_.record(std::chrono::duration<double>(Clock::now() - start_).count()); }
+AdaptiveTeam::Unit::~Unit() {
+    const auto end = Clock::now();
+    double seconds = std::chrono::duration<double>(end - start_).count();
+    if (probe_) {
+        const ProbeLimit p = std::exchange(probeLimit, ProbeLimit{});
+        // Cut short: the probe's whole unit, estimated from the share of loops it ran by then.
+        if (p.cutAt != Clock::time_point{} && p.before > 0)
+            seconds = std::chrono::duration<double>(p.cutAt - start_).count() * static_cast<double>(p.loops) / static_cast<double>(p.before);
+    }
+    team_.record(seconds);
+}
 
 }  // namespace clothlab

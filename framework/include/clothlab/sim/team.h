@@ -85,10 +85,19 @@ void setDefaultThreads(int threads);
 ///   \f$ \bar T \f$ is current;
 /// - every `interval` units of the current size one unit runs with the other size (a probe); its T
 ///   replaces the other's \f$ \bar T \f$. A probe that wins by the margin
-///   (\f$ T < (1 - \mathit{kMargin})\,\bar T_{current} \f$) makes its size current and sets interval =
-///   kFirstInterval; one that does not doubles interval, up to kLongestInterval. A probe also comes at
+///   (\f$ T < (1 - \mathit{kMargin})\,\bar T_{current} \f$) is followed by a second one; when that wins
+///   too, its size becomes current and interval = kFirstInterval (one lucky unit, the neighbour
+///   program pausing for a moment, does not switch the team); a probe that loses doubles interval, up
+///   to kLongestInterval. A probe also comes at
 ///   once when \f$ (1 - \mathit{kMargin})\,\bar T_{current} \f$ rises above the other's
 ///   \f$ \bar T \f$ (the machine got busier or quieter).
+///
+/// A probe stops as soon as it can no longer win: once it has run for
+/// \f$ (1 - \mathit{kMargin})\,\bar T_{current} \f$, the rest of its unit's parallel loops use the current
+/// size, and its T is estimated as \f$ t_{cut} \cdot L / L_{probe} \f$ (t_cut: the time when the first
+/// loop found the limit passed; L: the unit's loops; L_probe: those that ran with the probe's size).
+/// So a probe costs at most about one unit of the current size, however slow the other size is (two
+/// threads beside another busy program can take many times longer than one).
 ///
 /// Once the interval has grown, probes that lose cost at most one unit in kLongestInterval; when the
 /// load changes, the current size follows within kLongestInterval units.
@@ -131,7 +140,8 @@ public:
 
     private:
         AdaptiveTeam& team_;                          ///< where the time goes
-        TeamCap cap_;                                 ///< the size of this unit
+        bool probe_;                                  ///< a probe that stops once it cannot win (class comment)
+        TeamCap cap_;                                 ///< the size of this unit (of a probe: the larger size)
         std::chrono::steady_clock::time_point start_;  ///< when the unit began
     };
     /// Starts one unit (see Unit); keep the result alive for the unit's duration.
@@ -145,6 +155,7 @@ private:
     int size_[2] = {1, 1};    ///< the two sizes: 1 and most()
     int now_ = 1;             ///< index of the current size (most() first)
     int probing_ = 0;         ///< 1: the next unit runs with the other size
+    bool confirmed_ = false;  ///< the last probe won: the next one decides
     double mean_[2] = {0, 0}; ///< T̄ per size, s (valid once counted_ > 0)
     long counted_[2] = {0, 0};  ///< units counted per size
     long units_[2] = {0, 0};  ///< units recorded per size, the uncounted first ones too
