@@ -34,7 +34,8 @@ void runShares(int threads, const std::function<void(int t, int n)>& share);
 
 /// The team size that parallel loops asking for `threads` use on this thread now:
 /// \f$ \max(1, \min(\mathit{threads}, \mathit{cap})) \f$ with the cap of the innermost TeamCap alive on
-/// this thread (no TeamCap: no cap).
+/// this thread (no TeamCap: no cap); inside a probe (AdaptiveTeam::Unit) also at most the probe's size,
+/// or once the probe can no longer win the current size. Each call counts as one loop of the probe.
 /// @param threads  the threads asked for (a SweepPlan's, solver.threads resolved)
 /// @return         ≥ 1
 int teamThreads(int threads);
@@ -128,7 +129,8 @@ public:
     long switches() const { return switches_; }
 
     /// One unit of work: caps this thread's parallel loops at the team's threads() while it lives,
-    /// then records its wall-clock time (record()).
+    /// then records its wall-clock time (record()); a probe that can no longer win goes on with the
+    /// current size and records its estimated time (class comment).
     class Unit {
     public:
         /// @param team  the team that chooses the size and records the time
