@@ -382,7 +382,7 @@ std::vector<StageResult> runStages(const fs::path& points_dir, const std::vector
         shown[s] = "exercises/" + file.substr(0, file.find('.')) + "/answers.json";
         for (const TestResult& t : pointsTests(points)) queue.push_back({s, out[s].tests.size(), t}), out[s].tests.emplace_back();
     }
-    std::unique_ptr<std::atomic<int>[]> timeouts(new std::atomic<int>[stages.size()]());
+    std::vector<std::atomic<int>> timeouts(stages.size());  // per stage
     fs::create_directories(logs);
     parallelFor(static_cast<int>(queue.size()), jobs, [&](int i, int worker) {
         const Queued& q = queue[static_cast<size_t>(i)];
