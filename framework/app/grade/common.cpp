@@ -52,23 +52,6 @@ void writeFile(const fs::path& p, const std::string& text) {
     if (!out) die(p.string() + ": (file): cannot write");
 }
 
-std::string capture(const std::string& cmd) {
-    std::string out;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) die("cannot run: " + cmd);
-    char buf[4096];
-    size_t k;
-    while ((k = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, k);
-    ::pclose(p);
-    return out;
-}
-
-std::string shellQuote(const fs::path& p) {
-    std::string r = "'";
-    for (char c : p.string()) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return r + "'";
-}
-
 uint64_t fnv1a(const std::string& data, uint64_t h) {
     for (unsigned char c : data) h = (h ^ c) * 1099511628211ull;
     return h;

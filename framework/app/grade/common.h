@@ -35,11 +35,6 @@ struct StageResult {
 std::string readFile(const fs::path& p, size_t max_bytes = 16u << 20);
 void writeFile(const fs::path& p, const std::string& text);
 
-/// stdout of a shell command (the grader's own tools on files it wrote); dies when it cannot run.
-std::string capture(const std::string& cmd);
-/// p in single quotes for a shell command line.
-std::string shellQuote(const fs::path& p);
-
 /// 64-bit FNV-1a of `data`, continuing from `h` (a content hash for caches, not for security).
 uint64_t fnv1a(const std::string& data, uint64_t h = 1469598103934665603ull);
 std::string hex(uint64_t h);

@@ -36,17 +36,6 @@ std::string stamp(const fs::path& p) {
            std::to_string(st.st_mtim.tv_nsec) + ";";
 }
 
-/// The global symbols the object files define (nm).
-std::vector<std::string> definedSymbols(const std::vector<fs::path>& objects) {
-    std::vector<std::string> out;
-    if (objects.empty()) return out;
-    std::string cmd = "nm -P --defined-only --extern-only";
-    for (const auto& o : objects) cmd += " " + shellQuote(o);
-    std::istringstream in(capture(cmd + " 2>/dev/null"));
-    for (std::string name, rest; in >> name && std::getline(in, rest);) out.push_back(name);
-    return out;
-}
-
 std::mutex g_print;
 void progress(bool on, const std::string& line) {
     if (!on) return;
@@ -78,7 +67,7 @@ Kit loadKit(const fs::path& file) {
         k.points_dir = j.at("points_dir").get<std::string>();
         for (const auto& s : j.at("stages")) {
             KitStage st{s.at("stage"), s.at("dir"), paths(s.at("tests")), paths(s.at("reference")), paths(s.at("stub")),
-                        paths(s.at("proxy")), {}};
+                        paths(s.at("proxy"))};
             k.stages.push_back(st);
         }
     } catch (const std::exception& e) {
@@ -94,10 +83,6 @@ Kit loadKit(const fs::path& file) {
         for (const auto& p : *list) fp += stamp(p);
     for (const auto& e : fs::recursive_directory_iterator(k.include_dir)) fp += stamp(e.path());
     k.fingerprint = hex(fnv1a(fp));
-    // The framework functions each stage's proxies replace (they define __wrap_NAME): -Wl,--wrap=NAME.
-    for (auto& st : k.stages)
-        for (const auto& name : definedSymbols(st.proxy))
-            if (name.rfind("__wrap_", 0) == 0) st.wraps.push_back(name.substr(7));
     return k;
 }
 
@@ -533,7 +518,6 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         // The test process links the graded tests, our code for the stages that come from us, and
         // proxies for those that come from the submission; the submission process links those.
         std::vector<fs::path> client = kit.main_objects, server = kit.server_objects, submitted;
-        std::vector<std::string> client_flags = kit.link_flags;
         client.insert(client.end(), st.tests.begin(), st.tests.end());
         for (const auto& other : kit.stages) {
             const std::vector<fs::path>* use = &other.stub;
@@ -550,8 +534,6 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
             client.insert(client.end(), theirs ? other.proxy.begin() : use->begin(), theirs ? other.proxy.end() : use->end());
             server.insert(server.end(), use->begin(), use->end());
             if (theirs) submitted.insert(submitted.end(), use->begin(), use->end());
-            if (theirs)
-                for (const auto& w : other.wraps) client_flags.push_back("-Wl,--wrap=" + w);
         }
         client.insert(client.end(), kit.client_objects.begin(), kit.client_objects.end());
         client.insert(client.end(), kit.libs.begin(), kit.libs.end());
@@ -560,7 +542,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         server_flags.insert(server_flags.end(), kit.server_link_flags.begin(), kit.server_link_flags.end());
         progress(o.progress, "linking stage " + st.stage);
         std::string problem;
-        const fs::path exe = linkProgram(kit, client, client_flags, {}, "grade_" + st.stage, o, &problem);
+        const fs::path exe = linkProgram(kit, client, kit.link_flags, {}, "grade_" + st.stage, o, &problem);
         // Stages whose submission processes link the same objects share one program (--reference none:
         // all six), so an edit relinks it once.
         std::string objects;

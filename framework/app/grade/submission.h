@@ -18,7 +18,6 @@ struct KitStage {
     std::string dir;    ///< "01_hooke"
     std::vector<fs::path> tests, reference, stub;  ///< object files: graded tests, solutions/ (may be empty), stub
     std::vector<fs::path> proxy;  ///< the stage's functions as calls into the submission process (remote/)
-    std::vector<std::string> wraps;  ///< framework functions the proxies replace (their __wrap_NAME): -Wl,--wrap=NAME
 };
 
 /// The grading kit: what CMake built (kit.json in the build tree, see framework/CMakeLists.txt).

@@ -16,6 +16,7 @@
 #include "clothlab/exercise/05_bending.h"
 #include "clothlab/exercise/06_collision.h"
 #include "clothlab/exercise/07_self_collision.h"
+#include "clothlab/sim/sweeps.h"
 
 namespace clothlab {
 
@@ -143,6 +144,12 @@ std::vector<ParticlePair> findNeighbourPairs(const Matrix3X& p, const SpatialHas
 PairCorrection projectSeparation(const Vec3&, const Vec3&, double, double, double) { throw NotImplemented("7.5"); }
 PairCorrection layerFriction(const Vec3&, const Vec3&, const Vec3&, const Vec3&, double, double, double, double) {
     throw NotImplemented("7.6");
+}
+
+/// The framework's distance sweep, replaced here too (sim/sweeps.cpp defines it weak): every position
+/// becomes 42 when the sweep arrives whole and serial (remote_test.cpp ASweepCrossesWhole).
+void projectDistanceSweep(const std::vector<DistanceLink>&, const VectorX&, double, Matrix3X& p, const SweepPlan& plan) {
+    p.setConstant(plan.threads == 1 ? 42.0 : -1.0);
 }
 
 }  // namespace clothlab

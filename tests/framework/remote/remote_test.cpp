@@ -128,6 +128,16 @@ TEST(SubmissionProcess, UnsetCallbacksStayUnsetAndCallbacksMayCallBack) {
     EXPECT_EQ(P.x, Matrix3X::Ones(3, 3));
 }
 
+TEST(SubmissionProcess, ASweepCrossesWhole) {
+    // This program links the framework's sweeps as well (sweepPlan() is in their object file); they
+    // are weak, so the proxy of remote/sweeps_04.cpp is the one called, as in a graded test process.
+    const SweepPlan plan = sweepPlan({Eigen::Vector4i(0, 1, -1, -1)}, 2, 2);
+    Matrix3X p = Matrix3X::Zero(3, 2);
+    EXPECT_NO_THROW(projectDistanceSweep({DistanceLink{0, 1, 1.0}}, VectorX::Ones(2), 1.0, p, plan))
+        << "the fake's 4.3 throws: the sweep ran here, one call per constraint";
+    EXPECT_EQ(p, Matrix3X::Constant(3, 2, 42.0)) << "the sweep must reach the submission process whole, with a serial plan";
+}
+
 TEST(SubmissionProcess, IndicesTheFrameworkUsesAreChecked) {
     const Matrix3X x = Matrix3X::Zero(3, 6);
     ClothSprings types;

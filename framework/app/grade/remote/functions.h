@@ -6,7 +6,7 @@
 // 901–906 are the framework's sweeps (sim/sweeps.h): loops that call a stage's function once per
 // constraint, many times per step. When that stage's code is the submission's, the test process
 // sends the whole sweep (one call per iteration, not one per constraint): remote/sweeps_NN.cpp define
-// __wrap_<sweep>, and the grader links with -Wl,--wrap=<sweep>. The result is the positions the
+// the sweeps again, and the framework's own are weak (sim/sweeps.cpp). The result is the positions the
 // submission's function produces either way; the sweep adds nothing the submission could not do.
 #pragma once
 #include <cstdint>

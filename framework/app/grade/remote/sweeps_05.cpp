@@ -1,5 +1,6 @@
-// Stage 05's framework sweeps in the test process: sent whole to the submission process when the
-// stage's code is the submission's (remote/functions.h: 901–906; the grader links with --wrap).
+// Stage 05's framework sweeps in the test process: when the stage's code is the submission's, the
+// grader links these in place of the framework's own (sim/sweeps.cpp defines those weak), and a
+// sweep crosses to the submission process whole, once per solver iteration (remote/functions.h).
 #include "remote/functions.h"
 #include "remote/peer.h"
 
@@ -8,15 +9,12 @@ namespace clothlab {
 using remote::Invoke;
 using remote::submissionProcess;
 
-void wrappedBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p, const SweepPlan& plan) __asm__("__wrap__ZN8clothlab19projectBendingSweepERKSt6vectorINS_14BendingStencilESaIS1_EERKN5Eigen6MatrixIdLin1ELi1ELi0ELin1ELi1EEEdRNS7_IdLi3ELin1ELi0ELi3ELin1EEERKNS_9SweepPlanE");
-void wrappedBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p, const SweepPlan& plan) {
+void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p, const SweepPlan& plan) {
     Invoke<decltype(projectBendingSweep)>::call(submissionProcess(), remote::k_projectBendingSweep, "projectBendingSweep", stencils, w, k, p, serialPlan(plan));
 }
 
-void wrappedBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
-                              std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) __asm__("__wrap__ZN8clothlab23projectBendingSweepXpbdERKSt6vectorINS_14BendingStencilESaIS1_EERKN5Eigen6MatrixIdLin1ELi1ELi0ELin1ELi1EEEdRS0_IdSaIdEERNS7_IdLi3ELin1ELi0ELi3ELin1EEERKNS_9SweepPlanE");
-void wrappedBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
-                              std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
+void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
+                             std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
     Invoke<decltype(projectBendingSweepXpbd)>::call(submissionProcess(), remote::k_projectBendingSweepXpbd, "projectBendingSweepXpbd", stencils, w, alphaTilde, lambda, p, serialPlan(plan));
 }
 
