@@ -21,7 +21,26 @@ endforeach()
 
 string(TOUPPER "${CMAKE_BUILD_TYPE}" _config)
 separate_arguments(_flags UNIX_COMMAND "-std=c++${CMAKE_CXX_STANDARD} ${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_config}}")
-list(JOIN _flags "\", \"" _flags_json)
+# kit.json is written as text: a value known here goes in with its \ and " escaped; the paths the
+# build makes (object files under the build folder) cannot be escaped in a generator expression, so
+# the two folders they sit in must hold neither character.
+function(_kit_json_string out value)
+  string(REPLACE "\\" "\\\\" value "${value}")
+  string(REPLACE "\"" "\\\"" value "${value}")
+  set(${out} "\"${value}\"" PARENT_SCOPE)
+endfunction()
+foreach(_dir IN ITEMS "${PROJECT_SOURCE_DIR}" "${CMAKE_BINARY_DIR}")
+  if(_dir MATCHES "[\"\\]")
+    message(FATAL_ERROR "${_dir}: (folder): a path with \" or \\ in it; the grading kit (kit.json) cannot name the files in it. Use another folder.")
+  endif()
+endforeach()
+set(_flags_json "")
+foreach(_f IN LISTS _flags)
+  _kit_json_string(_q "${_f}")
+  list(APPEND _flags_json "${_q}")
+endforeach()
+list(JOIN _flags_json ", " _flags_json)
+_kit_json_string(_compiler_json "${CMAKE_CXX_COMPILER}")
 
 # The precompiled header, built with the flags the grader compiles submissions with (kit.json's
 # compile_flags): GCC uses a .gch only when the compile matches the one that made it.
@@ -75,8 +94,8 @@ foreach(NN IN LISTS CLOTHLAB_STAGES)
 endforeach()
 
 file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
-  \"compiler\": \"${CMAKE_CXX_COMPILER}\",
-  \"compile_flags\": [\"${_flags_json}\"],
+  \"compiler\": ${_compiler_json},
+  \"compile_flags\": [${_flags_json}],
   \"include_dir\": \"${_kit}/include\",
   \"precompiled_header\": \"clothlab_precompiled.h\",
   \"system_includes\": [\"$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,\", \">\"],
