@@ -47,7 +47,7 @@ done <"$hostile/attacks.tsv"
 ((n > 0)) || fail "no attack matches '$only'"
 
 # --timeout 8 (CPU seconds per process; the wall clock 24 s): the reference's slowest graded test
-# (Experiments.CurtainStrainAtStiffness0_9, two curtain runs through the submission's process) needs
+# (Experiments.CurtainStrainMeasured, curtain runs through the submission's process) needs
 # between 2 and 4 s; the attacks that spin or sleep end sooner than with the default 30 s.
 if [[ $mode == full ]]; then
   "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --timeout 8 "${grade_only[@]}" >"$tmp/grade.log" 2>&1 \

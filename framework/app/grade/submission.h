@@ -20,7 +20,7 @@ struct KitStage {
     std::vector<fs::path> proxy;  ///< the stage's functions as calls into the submission process (remote/)
 };
 
-/// The grading kit: what CMake built (kit.json in the build tree, see framework/CMakeLists.txt).
+/// The grading kit: what CMake built (kit.json in the build tree, written by cmake/grade_kit.cmake).
 struct Kit {
     fs::path file;
     std::string compiler;
