@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The docs' commands and the scene fields against the code:
-#  1. the commands `./lab help` lists are the commands `lab` dispatches, and back;
+#  1. the commands `./lab help` lists are the commands `lab` dispatches, and back, and so are those
+#     of the `lab` line of docs/design.md's Layout (but help);
 #  2. every `./lab X` and `build/bin/clothlab X` line in a code block of README.md, docs/*.md and the
 #     task sheets names a command that exists (lab's dispatcher, clothlab's own --help);
 #  3. the quick ones run, as shown, in a copy of the tree (so their out/ folders land in a temporary
@@ -31,6 +32,10 @@ check_commands() {
   local lab_cmds; lab_cmds=$(lab_dispatched "$tree")
   [[ $(lab_listed "$tree") == "$lab_cmds" ]] || {
     echo "lab: 'lab help' lists [$(lab_listed "$tree" | tr '\n' ' ')], the dispatcher runs [$(tr '\n' ' ' <<<"$lab_cmds")]"; bad=1; }
+  # docs/design.md's Layout names them on its `lab` line (all but help).
+  local layout; layout=$(sed -n 's/^lab  *the one entry point: \([a-z -]*\).*/\1/p' "$tree/docs/design.md" | tr ' ' '\n' | grep . | sort -u)
+  [[ $layout == "$(grep -vx help <<<"$lab_cmds")" ]] || {
+    echo "docs/design.md: the Layout's lab line lists [$(tr '\n' ' ' <<<"$layout")], the dispatcher runs [$(tr '\n' ' ' <<<"$lab_cmds")]"; bad=1; }
   local cl_cmds; cl_cmds=$(clothlab_listed)
   for f in "$tree/README.md" "$tree"/docs/*.md "$tree"/exercises/*/README.md; do
     while IFS= read -r line; do
