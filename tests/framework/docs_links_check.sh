@@ -32,10 +32,10 @@ check() {  # check TREE
 check "$root" || { echo "FAIL: the docs point to files that do not exist"; exit 1; }
 size=$(wc -c <"$root/README.md")
 ((size < 12 * 1024)) || { echo "FAIL: README.md is $size bytes; keep it under 12 KB (one screen per audience, details in docs/)"; exit 1; }
-# What a student sees: the student copy's points file keeps only Experiments.AnswerFileIsComplete of the
-# experiments (lab's cmd_release; the same filter leaves the copy's own file as it is).
-student='.tests |= with_entries(select((.key | startswith("Experiments.") | not) or .key == "Experiments.AnswerFileIsComplete"))'
-tests=$(jq "$student | .tests | length" "$root/tests/01_hooke.points.json") points=$(jq "$student | [.tests[]] | add" "$root/tests/01_hooke.points.json")
+# What a student sees: the points file as ./lab release leaves it (tools/student_points.jq; the copy's own
+# file passes through it unchanged).
+student=$(jq -c -f "$root/tools/student_points.jq" "$root/tests/01_hooke.points.json") || { echo "FAIL: tools/student_points.jq"; exit 1; }
+tests=$(jq '.tests | length' <<<"$student") points=$(jq '[.tests[]] | add' <<<"$student")
 row=$(grep -E '^ *01 +Hooke' "$root/README.md")
 [[ $row =~ [0-9]+\ /\ ([0-9]+)\ +[0-9.]+\ /\ ([0-9.]+) && ${BASH_REMATCH[1]} == "$tests" && ${BASH_REMATCH[2]} == "$points.0" ]] \
   || { echo "FAIL: README.md's example grade of stage 01 ('$row') must show / $tests tests and / $points.0 points (tests/01_hooke.points.json as the student copy has it)"; exit 1; }

@@ -2,9 +2,10 @@
 //
 // With the sandbox on, a program runs under bubblewrap (bwrap, Debian package `bubblewrap`) in new
 // PID, network, IPC, UTS and cgroup namespaces (and a user namespace when the grader is not root),
-// with no capabilities, as user `nobody` when the grader runs as root, with no network, a fresh /tmp and only the paths in `mounts` (plus /usr,
-// read-only). Limits (setrlimit): CPU seconds, address space, file size, open files, processes.
-// A wall-clock timeout kills the whole sandbox (every process in its PID namespace dies with it).
+// with no capabilities, as user `nobody` when the grader runs as root, with no network, a fresh /tmp
+// and only the paths in `mounts` (plus /usr, read-only). Limits (setrlimit): CPU seconds, address
+// space, file size, open files, processes. A wall-clock timeout kills the whole sandbox (every
+// process in its PID namespace dies with it).
 #pragma once
 #include <filesystem>
 #include <string>

@@ -64,7 +64,8 @@ int sweepThreads(int requested) { return requested > 0 ? requested : defaultThre
 // submission's process instead of one call per constraint).
 #define CLOTHLAB_REPLACEABLE [[gnu::weak]]
 
-CLOTHLAB_REPLACEABLE void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p,
+CLOTHLAB_REPLACEABLE
+void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p,
                           const SweepPlan& plan) {
     forEachConstraint(links.size(), plan, [&](int n) {
         const DistanceLink& L = links[static_cast<size_t>(n)];
@@ -74,7 +75,8 @@ CLOTHLAB_REPLACEABLE void projectDistanceSweep(const std::vector<DistanceLink>& 
     });
 }
 
-CLOTHLAB_REPLACEABLE void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p,
+CLOTHLAB_REPLACEABLE
+void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p,
                          const SweepPlan& plan) {
     forEachConstraint(stencils.size(), plan, [&](int n) {
         const BendingStencil& s = stencils[static_cast<size_t>(n)];
@@ -84,7 +86,8 @@ CLOTHLAB_REPLACEABLE void projectBendingSweep(const std::vector<BendingStencil>&
     });
 }
 
-CLOTHLAB_REPLACEABLE void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const VectorX& w, double alphaTilde,
+CLOTHLAB_REPLACEABLE
+void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const VectorX& w, double alphaTilde,
                               std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
     forEachConstraint(links.size(), plan, [&](int n) {
         const DistanceLink& L = links[static_cast<size_t>(n)];
@@ -95,7 +98,8 @@ CLOTHLAB_REPLACEABLE void projectDistanceSweepXpbd(const std::vector<DistanceLin
     });
 }
 
-CLOTHLAB_REPLACEABLE void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
+CLOTHLAB_REPLACEABLE
+void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
                              std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
     forEachConstraint(stencils.size(), plan, [&](int n) {
         const BendingStencil& s = stencils[static_cast<size_t>(n)];
@@ -105,7 +109,8 @@ CLOTHLAB_REPLACEABLE void projectBendingSweepXpbd(const std::vector<BendingStenc
     });
 }
 
-CLOTHLAB_REPLACEABLE void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p,
+CLOTHLAB_REPLACEABLE
+void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p,
                            int threads) {
     // Runs of contacts of one particle: run r is contacts start[r] .. start[r+1] − 1.
     std::vector<int> start;
@@ -126,7 +131,8 @@ CLOTHLAB_REPLACEABLE void projectCollisionSweep(const std::vector<CollisionConst
     });
 }
 
-CLOTHLAB_REPLACEABLE void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,
+CLOTHLAB_REPLACEABLE
+void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,
                                Matrix3X& p) {
     for (const DistanceLink& L : pairs) {
         const double depth = L.d - (p.col(L.i) - p.col(L.j)).norm();
