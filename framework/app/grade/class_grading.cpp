@@ -46,8 +46,7 @@ std::vector<Entry> listEntries(const fs::path& dir) {
 
 /// Content hash of a submission: every regular file's relative path and bytes (links are not followed).
 std::string contentHash(const Entry& e, const std::string& salt) {
-    uint64_t h = fnv1a(salt);
-    if (!e.archive.empty()) return hex(fnv1a(readFile(e.path, 256u << 20), h));
+    if (!e.archive.empty()) return sha256(salt + readFile(e.path, 256u << 20));
     std::vector<fs::path> files;
     std::error_code ec;
     for (fs::recursive_directory_iterator it(e.path, ec), end; it != end; it.increment(ec)) {
@@ -55,8 +54,12 @@ std::string contentHash(const Entry& e, const std::string& salt) {
         if (it->is_regular_file(ec) && !it->is_symlink(ec)) files.push_back(it->path());
     }
     std::sort(files.begin(), files.end());
-    for (const auto& f : files) h = fnv1a(readFile(f, 16u << 20), fnv1a(fs::relative(f, e.path).string(), h));
-    return hex(h);
+    std::string all = salt;
+    for (const auto& f : files) {
+        const std::string bytes = readFile(f, 16u << 20);
+        all += "\n" + fs::relative(f, e.path).string() + "\n" + std::to_string(bytes.size()) + "\n" + bytes;
+    }
+    return sha256(all);
 }
 
 /// Unpacks an archive (sandboxed, as nobody) into `to`.
@@ -141,7 +144,7 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
         std::string name = safeName(e.name);
         int same = 0;
         for (const auto& other : entries) same += safeName(other.name) == name;
-        if (same > 1 || name != e.name) name += "-" + hex(fnv1a(e.path.filename().string())).substr(0, 8);
+        if (same > 1 || name != e.name) name += "-" + sha256(e.path.filename().string()).substr(0, 8);
         const fs::path dir = work / name;
         Row row;
         std::string hash;

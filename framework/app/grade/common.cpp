@@ -6,6 +6,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <openssl/evp.h>
+
 namespace grade {
 
 double StageResult::points() const {
@@ -52,15 +54,14 @@ void writeFile(const fs::path& p, const std::string& text) {
     if (!out) die(p.string() + ": (file): cannot write");
 }
 
-uint64_t fnv1a(const std::string& data, uint64_t h) {
-    for (unsigned char c : data) h = (h ^ c) * 1099511628211ull;
-    return h;
-}
-
-std::string hex(uint64_t h) {
-    char b[17];
-    std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h));
-    return b;
+std::string sha256(const std::string& data) {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int size = 0;
+    if (EVP_Digest(data.data(), data.size(), digest, &size, EVP_sha256(), nullptr) != 1) die("SHA-256: libcrypto failed");
+    std::string out;
+    char b[3];
+    for (unsigned int i = 0; i < size; ++i) std::snprintf(b, sizeof b, "%02x", digest[i]), out += b;
+    return out;
 }
 
 json loadPoints(const fs::path& points_dir, const std::string& stage) {

@@ -1,6 +1,5 @@
 // clothlab-grade: what the grader's parts share (results, points files, small file helpers).
 #pragma once
-#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -35,9 +34,9 @@ struct StageResult {
 std::string readFile(const fs::path& p, size_t max_bytes = 16u << 20);
 void writeFile(const fs::path& p, const std::string& text);
 
-/// 64-bit FNV-1a of `data`, continuing from `h` (a content hash for caches, not for security).
-uint64_t fnv1a(const std::string& data, uint64_t h = 1469598103934665603ull);
-std::string hex(uint64_t h);
+/// SHA-256 of `data` (OpenSSL's libcrypto) as 64 hex digits: the key of the grader's caches, which
+/// reuse a result whose stored digest equals the digest of what it would be made from.
+std::string sha256(const std::string& data);
 
 /// The points file tests/NN_name.points.json of stage NN, checked: {"title": "...", "tests": {"Suite.Test": points > 0}},
 /// optionally "bonus": {"Suite.Test": points > 0} (tests of an optional task, counted beside the stage's points).

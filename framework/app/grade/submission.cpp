@@ -82,7 +82,7 @@ Kit loadKit(const fs::path& file) {
     for (const auto* list : {&k.main_objects, &k.libs, &k.client_objects, &k.server_objects})
         for (const auto& p : *list) fp += stamp(p);
     for (const auto& e : fs::recursive_directory_iterator(k.include_dir)) fp += stamp(e.path());
-    k.fingerprint = hex(fnv1a(fp));
+    k.fingerprint = sha256(fp);
     return k;
 }
 
@@ -198,11 +198,11 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
     const auto files = copySources(folder, src, &c.problem);
     std::string key = kit.fingerprint + "\n" + c.problem;
     for (const auto& f : files) key += f.filename().string() + "\n" + std::to_string(fs::file_size(f)) + "\n" + readFile(f) + "\n";
-    const std::string hash = hex(fnv1a(key));
-    const fs::path obj = shared.empty() ? work / "obj" / st.stage : shared / (st.stage + "-" + hash);
+    const std::string hash = sha256(key);
+    const fs::path obj = shared.empty() ? work / "obj" / st.stage : shared / (st.stage + "-" + hash.substr(0, 16));
     std::lock_guard<std::mutex> lock(folderLock(obj));
     const fs::path cache = obj / "result.json";
-    if (fs::exists(cache) && readFile(obj / "key.txt", 64u << 20) == key) {
+    if (fs::exists(cache)) {
         const json j = json::parse(readFile(cache), nullptr, false);
         if (!j.is_discarded() && j.value("hash", "") == hash) {
             c.status = j["status"];
@@ -254,7 +254,6 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
     }
     json j = {{"hash", hash}, {"status", c.status}, {"problem", c.problem}, {"objects", json::array()}};
     for (const auto& o : c.objects) j["objects"].push_back(o.string());
-    writeFile(obj / "key.txt", key);
     writeFile(cache, j.dump(1));
     return c;
 }
@@ -401,8 +400,8 @@ fs::path answersFolder(const fs::path& file, const fs::path& folder) {
     return folder;
 }
 
-/// Links `inputs` (sandboxed) into a program called `name`, reused from the cache when the key is
-/// the same byte for byte; `contents` are objects whose bytes go into the key (the submission's).
+/// Links `inputs` (sandboxed) into a program called `name`, reused from the cache when the key's
+/// SHA-256 is the same; `contents` are objects whose bytes go into the key (the submission's).
 /// On failure: empty path, *problem says why (the linker's first lines, object names as sources).
 fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const std::vector<std::string>& flags,
                      const std::vector<fs::path>& contents, const std::string& name, const GradeOptions& o,
@@ -411,13 +410,12 @@ fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const 
     for (const auto& p : inputs) key += stamp(p);  // objects of the shared cache never change in place
     for (const auto& f : flags) key += f + ";";
     for (const auto& p : contents) key += readFile(p, 256u << 20);
-    const std::string hash = hex(fnv1a(key));
-    const fs::path bin = o.shared_cache.empty() ? o.work / "bin" : o.shared_cache / ("bin-" + name + "-" + hash);
+    const std::string hash = sha256(key);
+    const fs::path bin = o.shared_cache.empty() ? o.work / "bin" : o.shared_cache / ("bin-" + name + "-" + hash.substr(0, 16));
     const fs::path exe = bin / name;
-    const fs::path key_file = bin / (name + ".key");
+    const fs::path key_file = bin / (name + ".sha256");
     std::lock_guard<std::mutex> lock(folderLock(bin));
-    // Reused only when the stored key is byte for byte this key (not on the hash alone).
-    if (fs::exists(exe) && fs::exists(key_file) && readFile(key_file, 512u << 20) == key) return exe;
+    if (fs::exists(exe) && readFile(key_file, 64) == hash) return exe;
     fs::remove(exe);
     makeWritableForSandbox(bin);
     SandboxRun r;
@@ -443,7 +441,7 @@ fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const 
         *problem = firstLines(log, 8, "");
         return {};
     }
-    writeFile(key_file, key);
+    writeFile(key_file, hash);
     return exe;
 }
 
@@ -547,7 +545,7 @@ std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, c
         // all six), so an edit relinks it once.
         std::string objects;
         for (const auto& p : server) objects += p.string() + ";";
-        const std::string server_name = "submission_" + hex(fnv1a(objects)).substr(0, 12);
+        const std::string server_name = "submission_" + sha256(objects).substr(0, 12);
         const fs::path serve = problem.empty() ? linkProgram(kit, server, server_flags, submitted, server_name, o, &problem) : fs::path();
         if (!problem.empty()) {
             results.push_back(ungradedStage(kit.points_dir, st.stage, "does not link", problem));
