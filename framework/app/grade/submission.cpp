@@ -318,19 +318,14 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
         r.message = "timed out: used more than " + std::to_string(timeout_s) + " s of CPU time (an endless loop?)";
     } else if (!failures.empty()) {
         r.message = failures;
-    } else if (!started) {
-        std::string tail = readFile(log, 1u << 20);
-        if (tail.size() > 600) tail = tail.substr(tail.size() - 600);
-        r.message = "the test did not start (the program ended with status " + std::to_string(out.exit_code) +
-                    " before it ran)" + (tail.empty() ? "" : ":\n" + tail);
-    } else if (!ended_passed || out.exit_code != 0) {
-        std::string tail = readFile(log, 1u << 20);
+    } else if (!started || !ended_passed || out.exit_code != 0) {
+        std::string tail = readFile(log, 1u << 20);  // the last lines it printed
         if (tail.size() > 600) tail = tail.substr(tail.size() - 600);
         const int code = out.exit_code;
-        r.message = std::string("crashed or ended early (") +
-                    (code > 128 ? "signal " + std::to_string(code - 128) + (code - 128 == 11 ? ", a segmentation fault" : code - 128 == 6 ? ", abort" : code - 128 == 24 ? ", CPU time limit" : code - 128 == 25 ? ", file size limit" : "")
-                                : "exit status " + std::to_string(code)) +
-                    ")" + (tail.empty() ? "" : ":\n" + tail);
+        r.message = (!started ? "the test did not start (the program ended with status " + std::to_string(code) + " before it ran)"
+                              : "crashed or ended early (" + (code > 128 ? "signal " + std::to_string(code - 128) + ", " + ::strsignal(code - 128)
+                                                                         : "exit status " + std::to_string(code)) + ")") +
+                    (tail.empty() ? "" : ":\n" + tail);
     } else {
         r.passed = true;
     }
