@@ -215,12 +215,7 @@ int gradeClass(const Kit& kit, const ClassOptions& o) {
     for (size_t i = 0; i < entries.size(); ++i) {
         double pts = 0, max = 0, bonus = 0;
         csv << csvField(entries[i].name);
-        for (const auto& st : kit.stages) {
-            double p = 0;
-            for (const auto& s : rows[i].stages)
-                if (s.stage == st.stage) p = s.points();
-            csv << "," << csvNumber(p);
-        }
+        for (const auto& st : kit.stages) csv << "," << csvNumber(stagePoints(rows[i].stages, st.stage));
         for (const auto& s : rows[i].stages) pts += s.points(), max += s.max_points(), bonus += s.bonus();
         csv << "," << csvNumber(pts) << "," << csvNumber(max) << "," << csvField(rows[i].status) << "," << csvNumber(bonus) << "\n";
     }

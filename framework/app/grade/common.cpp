@@ -10,26 +10,18 @@
 
 namespace grade {
 
-double StageResult::points() const {
+namespace {
+/// The sum of f(t) over the tests.
+template <class F> double sum(const std::vector<TestResult>& tests, F f) {
     double s = 0;
-    for (const auto& t : tests) s += t.bonus ? 0.0 : t.points;
+    for (const auto& t : tests) s += f(t);
     return s;
 }
-double StageResult::max_points() const {
-    double s = 0;
-    for (const auto& t : tests) s += t.bonus ? 0.0 : t.max_points;
-    return s;
-}
-double StageResult::bonus() const {
-    double s = 0;
-    for (const auto& t : tests) s += t.bonus ? t.points : 0.0;
-    return s;
-}
-int StageResult::passed() const {
-    int n = 0;
-    for (const auto& t : tests) n += t.passed;
-    return n;
-}
+}  // namespace
+double StageResult::points() const { return sum(tests, [](const TestResult& t) { return t.bonus ? 0.0 : t.points; }); }
+double StageResult::max_points() const { return sum(tests, [](const TestResult& t) { return t.bonus ? 0.0 : t.max_points; }); }
+double StageResult::bonus() const { return sum(tests, [](const TestResult& t) { return t.bonus ? t.points : 0.0; }); }
+int StageResult::passed() const { return static_cast<int>(sum(tests, [](const TestResult& t) { return t.passed ? 1.0 : 0.0; })); }
 
 void die(const std::string& msg) {
     std::cerr << "error: " << msg << "\n";

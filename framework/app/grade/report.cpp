@@ -198,14 +198,11 @@ std::string csvNumber(double x) {
     return b;
 }
 
-namespace {
-/// The points of `stage` in a student's results (0 when the stage is not among them).
-double stagePoints(const GradebookRow& row, const std::string& stage) {
-    for (const auto& s : row.stages)
+double stagePoints(const std::vector<StageResult>& stages, const std::string& stage) {
+    for (const auto& s : stages)
         if (s.stage == stage) return s.points();
     return 0;
 }
-}  // namespace
 
 std::string moodleCsv(const std::vector<GradeItem>& items, const std::vector<GradebookRow>& rows) {
     std::string csv = "Identifier";
@@ -213,7 +210,7 @@ std::string moodleCsv(const std::vector<GradeItem>& items, const std::vector<Gra
     csv += "\n";
     for (const auto& r : rows) {
         csv += csvField(r.student);
-        for (const auto& it : items) csv += "," + csvNumber(stagePoints(r, it.stage));
+        for (const auto& it : items) csv += "," + csvNumber(stagePoints(r.stages, it.stage));
         csv += "\n";
     }
     return csv;
@@ -227,7 +224,7 @@ std::string canvasCsv(const std::vector<GradeItem>& items, const std::vector<Gra
     csv += "\n";
     for (const auto& r : rows) {
         csv += csvField(r.student) + ",," + csvField(r.student) + ",";
-        for (const auto& it : items) csv += "," + csvNumber(stagePoints(r, it.stage));
+        for (const auto& it : items) csv += "," + csvNumber(stagePoints(r.stages, it.stage));
         csv += "\n";
     }
     return csv;

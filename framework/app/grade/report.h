@@ -48,6 +48,8 @@ std::string canvasCsv(const std::vector<GradeItem>& items, const std::vector<Gra
 std::string csvField(const std::string& s);
 /// A number for a CSV cell: %g (43, 21.5).
 std::string csvNumber(double x);
+/// The points of `stage` in a student's results (0 when the stage is not among them).
+double stagePoints(const std::vector<StageResult>& stages, const std::string& stage);
 /// "ok" or what kept stages from being graded ("01 does not compile; 03 rejected").
 std::string statusLine(const std::vector<StageResult>& stages);
 

@@ -22,12 +22,6 @@ namespace grade {
 
 namespace {
 
-std::vector<fs::path> paths(const json& j) {
-    std::vector<fs::path> out;
-    for (const auto& p : j) out.push_back(p.get<std::string>());
-    return out;
-}
-
 /// Content of a file's identity for the cache: path, size, modification time.
 std::string stamp(const fs::path& p) {
     struct stat st {};
@@ -51,24 +45,22 @@ Kit loadKit(const fs::path& file) {
     Kit k;
     k.file = file;
     try {
-        k.compiler = j.at("compiler");
+        j.at("compiler").get_to(k.compiler);
         std::error_code ec;  // the real program: a sandbox has no /etc/alternatives to follow links through
         if (const auto real = fs::canonical(k.compiler, ec); !ec) k.compiler = real.string();
-        for (const auto& f : j.at("compile_flags")) k.compile_flags.push_back(f);
-        k.include_dir = j.at("include_dir").get<std::string>();
+        j.at("compile_flags").get_to(k.compile_flags);
+        j.at("include_dir").get_to(k.include_dir);
         k.precompiled_header = j.value("precompiled_header", "");
-        k.system_includes = paths(j.at("system_includes"));
-        k.main_objects = paths(j.at("main_objects"));
-        k.libs = paths(j.at("libs"));
-        for (const auto& f : j.at("link_flags")) k.link_flags.push_back(f);
-        k.client_objects = paths(j.at("client_objects"));
-        k.server_objects = paths(j.at("server_objects"));
-        for (const auto& f : j.at("server_link_flags")) k.server_link_flags.push_back(f);
-        k.points_dir = j.at("points_dir").get<std::string>();
+        j.at("system_includes").get_to(k.system_includes);
+        j.at("main_objects").get_to(k.main_objects);
+        j.at("libs").get_to(k.libs);
+        j.at("link_flags").get_to(k.link_flags);
+        j.at("client_objects").get_to(k.client_objects);
+        j.at("server_objects").get_to(k.server_objects);
+        j.at("server_link_flags").get_to(k.server_link_flags);
+        j.at("points_dir").get_to(k.points_dir);
         for (const auto& s : j.at("stages")) {
-            KitStage st{s.at("stage"), s.at("dir"), paths(s.at("tests")), paths(s.at("reference")), paths(s.at("stub")),
-                        paths(s.at("proxy"))};
-            k.stages.push_back(st);
+            k.stages.push_back({s.at("stage"), s.at("dir"), s.at("tests"), s.at("reference"), s.at("stub"), s.at("proxy")});
         }
     } catch (const std::exception& e) {
         die(file.string() + ": (grading kit): " + e.what() + "; rebuild (./lab build)");
