@@ -3,7 +3,8 @@
 # backticks under the repository's top folders (framework/, tests/, scenes/, docs/, exercises/,
 # solutions/, cmake/, benchmarks/, slides/). Placeholders (NN, 0N, *, <...>, {a,b}) are skipped.
 # And the README stays under 12 KB, and its example grade of stage 01 counts the tests and points
-# that tests/01_hooke.points.json has in the student copy.
+# that tests/01_hooke.points.json has in the student copy; docs/grading.md's stage totals are the
+# points files'.
 # Usage: docs_links_check.sh SOURCE_DIR   (then proves it fails on a copy with a broken link planted)
 set -u
 root=$1
@@ -39,6 +40,18 @@ tests=$(jq '.tests | length' <<<"$student") points=$(jq '[.tests[]] | add' <<<"$
 row=$(grep -E '^ *01 +Hooke' "$root/README.md")
 [[ $row =~ [0-9]+\ /\ ([0-9]+)\ +[0-9.]+\ /\ ([0-9.]+) && ${BASH_REMATCH[1]} == "$tests" && ${BASH_REMATCH[2]} == "$points.0" ]] \
   || { echo "FAIL: README.md's example grade of stage 01 ('$row') must show / $tests tests and / $points.0 points (tests/01_hooke.points.json as the student copy has it)"; exit 1; }
+# docs/grading.md's stage totals ("the stage totals are A–B (stage 01 has N task tests)") are the points files'.
+totals() {  # the sentence as the points files make it
+  local lo hi n
+  read -r lo hi < <(jq -s '[.[] | [.tests[]] | add] | "\(min) \(max)"' -r "$root"/tests/[0-9][0-9]_*.points.json)
+  n=$(jq '[.tests | keys[] | select(startswith("Task"))] | length' "$root/tests/01_hooke.points.json")
+  echo "the stage totals are $lo–$hi (stage 01 has $n task tests)"
+}
+sentence=$(totals)
+grep -qF "$sentence" "$root/docs/grading.md" \
+  || { echo "FAIL: docs/grading.md must say '$sentence' (the points files' totals; recipe in docs/maintaining.md)"; exit 1; }
+sed 's/stage 01 has [0-9]* task tests/stage 01 has 999 task tests/' "$root/docs/grading.md" | grep -qF "$sentence" \
+  && { echo "FAIL: the stage-totals check misses a planted wrong count"; exit 1; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/t/docs" && cp "$root/README.md" "$tmp/t/" && cp "$root"/docs/*.md "$tmp/t/docs/"
 echo 'See [the scenes](docs/no_such_file.md) and `framework/src/sim/no_such_file.cpp`.' >> "$tmp/t/README.md"
