@@ -42,6 +42,18 @@ int countType(const std::vector<Spring>& s, SpringType type) {
     return static_cast<int>(std::count_if(s.begin(), s.end(), [&](const Spring& sp) { return sp.type == type; }));
 }
 
+/// "" when every spring says which kind it is, else what is wrong: the tests of 2.1 count, measure
+/// and compare the springs per type, so a spring left at Spring::type's default fails all of them.
+std::string typeProblem(const std::vector<Spring>& s) {
+    for (const Spring& sp : s)
+        if (sp.type != SpringType::Structural && sp.type != SpringType::Shear && sp.type != SpringType::Bending)
+            return "spring " + std::to_string(sp.i) + "-" + std::to_string(sp.j) + " has type " +
+                   (sp.type == SpringType::Single ? std::string("Single (Spring::type's default)") : "value " + std::to_string(static_cast<int>(sp.type))) +
+                   ": set Spring::type to SpringType::Structural, Shear or Bending; the counts, rest lengths and "
+                   "stiffnesses of these tests are checked per type";
+    return "";
+}
+
 // The closed-form counts of the task sheet.
 int structuralCount(int nx, int ny) { return (nx - 1) * ny + nx * (ny - 1); }
 int shearCount(int nx, int ny) { return 2 * (nx - 1) * (ny - 1); }
@@ -83,6 +95,7 @@ struct MovingCloth {
 TEST(Task2_1_ClothSprings, StructuralCountMatchesFormula) {
     for (auto [nx, ny] : kSizes) {
         const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(true, false, false));
+        if (const std::string p = typeProblem(s); !p.empty()) FAIL() << nx << " x " << ny << " grid: " << p;
         EXPECT_EQ(countType(s, SpringType::Structural), structuralCount(nx, ny))
             << nx << " x " << ny << " grid: want (nx-1) ny + nx (ny-1) = " << structuralCount(nx, ny)
             << " structural springs (Strukturfedern, to the right and downward neighbour)";
@@ -95,6 +108,7 @@ TEST(Task2_1_ClothSprings, StructuralCountMatchesFormula) {
 TEST(Task2_1_ClothSprings, ShearCountMatchesFormula) {
     for (auto [nx, ny] : kSizes) {
         const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(false, true, false));
+        if (const std::string p = typeProblem(s); !p.empty()) FAIL() << nx << " x " << ny << " grid: " << p;
         EXPECT_EQ(countType(s, SpringType::Shear), shearCount(nx, ny))
             << nx << " x " << ny << " grid: want 2 (nx-1)(ny-1) = " << shearCount(nx, ny)
             << " shear springs (Scherfedern: BOTH diagonals of every cell)";
@@ -107,6 +121,7 @@ TEST(Task2_1_ClothSprings, ShearCountMatchesFormula) {
 TEST(Task2_1_ClothSprings, BendingCountMatchesFormula) {
     for (auto [nx, ny] : kSizes) {
         const auto s = makeClothSprings(gridPositions(nx, ny, 1.0, 1.0), nx, ny, only(false, false, true));
+        if (const std::string p = typeProblem(s); !p.empty()) FAIL() << nx << " x " << ny << " grid: " << p;
         EXPECT_EQ(countType(s, SpringType::Bending), bendingCount(nx, ny))
             << nx << " x " << ny << " grid: want (nx-2) ny + nx (ny-2) = " << bendingCount(nx, ny)
             << " bending springs (Biegefedern, to the neighbours TWO apart, right and down; none where the grid is too small)";
@@ -122,6 +137,7 @@ TEST(Task2_1_ClothSprings, OnlyEnabledTypesAreBuilt) {
         << "the springs of a 5 x 4 grid with every spring type disabled: there must be none; got "
         << makeClothSprings(x, 5, 4, only(false, false, false)).size();
     const auto all = makeClothSprings(x, 5, 4, only(true, true, true));
+    if (const std::string p = typeProblem(all); !p.empty()) FAIL() << p;
     EXPECT_EQ(countType(all, SpringType::Structural), structuralCount(5, 4))
         << "the number of structural springs on a 5 x 4 grid with every type enabled: enabling the others must not change it";
     EXPECT_EQ(countType(all, SpringType::Shear), shearCount(5, 4))
@@ -179,6 +195,7 @@ TEST(Task2_1_ClothSprings, RestLengthsFromInitialPositions) {
     const auto s = makeClothSprings(gridPositions(nx, ny, 3.0, 1.0), nx, ny, only(true, true, true));
     ASSERT_FALSE(s.empty()) << "makeClothSprings on a " << nx << " x " << ny << " grid (3 m x 1 m) with every spring type enabled "
                                "must return springs; it returned none";
+    if (const std::string p = typeProblem(s); !p.empty()) FAIL() << p;
     for (const Spring& sp : s) {
         const bool horizontal = sp.i / nx == sp.j / nx, vertical = sp.i % nx == sp.j % nx;
         double want = 0.0;
@@ -201,6 +218,7 @@ TEST(Task2_1_ClothSprings, RestLengthsFromInitialPositions) {
 TEST(Task2_1_ClothSprings, StiffnessAndDampingPerType) {
     const auto s = makeClothSprings(gridPositions(5, 5, 1.0, 1.0), 5, 5, only(true, true, true));
     ASSERT_FALSE(s.empty()) << "makeClothSprings on a 5 x 5 grid with every spring type enabled must return springs; it returned none";
+    if (const std::string p = typeProblem(s); !p.empty()) FAIL() << p;
     for (const Spring& sp : s) {
         const double k = sp.type == SpringType::Structural ? 100.0 : sp.type == SpringType::Shear ? 50.0 : 10.0;
         const double kd = sp.type == SpringType::Structural ? 0.1 : sp.type == SpringType::Shear ? 0.2 : 0.3;

@@ -43,3 +43,6 @@ clothlab_mistake(skips_short_springs FILE mfn.cpp
 clothlab_mistake(damping_only_structural FILE mfn.cpp
   FIND "v.col(s.i), v.col(s.j), s.kd);" REPLACE "v.col(s.i), v.col(s.j), s.type == SpringType::Structural ? s.kd : 0.0);"
   WHY "damps only the structural springs")
+clothlab_mistake(spring_type_not_set FILE mfn.cpp
+  FIND "springs.push_back({i, j, group.k, l0, group.kd, type});" REPLACE "springs.push_back({i, j, group.k, l0, group.kd});"
+  WHY "leaves Spring::type at its default (Single): right springs, but no kind the solver or the tests can tell apart")

@@ -25,7 +25,8 @@ namespace clothlab {
 /// - bending (Biegefedern): to (c+2, r) and to (c, r+2).
 ///
 /// Only neighbours inside the grid get a spring, every pair at most once, and only the types
-/// whose group is enabled. Each spring takes k and kd from its group, its type, and the rest length
+/// whose group is enabled. Each spring records its kind in Spring::type (Structural, Shear or
+/// Bending, never the default Single), takes k and kd from that type's group, and its rest length
 /// from the initial positions: \f$ l_0 = \|\vec x_j - \vec x_i\| \f$. The counts are
 /// \f$ (n_x-1)n_y + n_x(n_y-1) \f$ structural, \f$ 2(n_x-1)(n_y-1) \f$ shear and
 /// \f$ (n_x-2)n_y + n_x(n_y-2) \f$ bending springs (terms with a negative factor count as 0).
