@@ -133,6 +133,8 @@ grep -q "stage 05 (05_bending) uses stage_05_solutions" "$CLOTHLAB_BUILD.configu
   || fail "--reference 05,06 in the copy: $(grep 'uses stage_' "$CLOTHLAB_BUILD.configure.log" | tr '\n' ' ')"
 ./lab run scenes/pbd_sphere.json --quiet >"$tmp/sphere.log" 2>&1 || { tail -5 "$tmp/sphere.log"; fail "pbd_sphere with stages 01-04 done and the reference objects for 05-06"; }
 grep -q "^summary" "$tmp/sphere.log" || fail "pbd_sphere printed no summary: $(tail -3 "$tmp/sphere.log")"
+grep -q "note: stage 05, 06 runs the reference, not your code" "$tmp/sphere.log" \
+  || fail "./lab run in a copy built with --reference 05,06 does not say which stages are the reference's: $(head -3 "$tmp/sphere.log")"
 # The edit: stage 04 back to its stub; ./lab run rebuilds and stops at task 4.x, advising the reference
 # for 04 along with the 05 and 06 this build already uses.
 cp framework/stubs/04_distance/*.cpp exercises/04_distance/
