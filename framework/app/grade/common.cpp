@@ -21,7 +21,7 @@ template <class F> double sum(const std::vector<TestResult>& tests, F f) {
 double StageResult::points() const { return sum(tests, [](const TestResult& t) { return t.bonus ? 0.0 : t.points; }); }
 double StageResult::max_points() const { return sum(tests, [](const TestResult& t) { return t.bonus ? 0.0 : t.max_points; }); }
 double StageResult::bonus() const { return sum(tests, [](const TestResult& t) { return t.bonus ? t.points : 0.0; }); }
-int StageResult::passed() const { return static_cast<int>(sum(tests, [](const TestResult& t) { return t.passed ? 1.0 : 0.0; })); }
+int StageResult::passed() const { return static_cast<int>(std::count_if(tests.begin(), tests.end(), [](const TestResult& t) { return t.passed; })); }
 
 void die(const std::string& msg) {
     std::cerr << "error: " << msg << "\n";
