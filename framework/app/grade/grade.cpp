@@ -4,6 +4,7 @@
 //   --class DIR        grade one folder or archive per student into a gradebook (class_grading.h)
 //   --stage NN=EXE     run a graded binary the build made (the suite's self-checks, with --expect)
 //   --answers NN=FILE  with --stage: the answers.json its graded experiments read
+//   --sandbox MODE     auto (bubblewrap where it works, else container mode), bubblewrap or container
 //
 // Every test runs in its own sandboxed process (sandbox.h) and counts only when the grader saw it
 // start and pass over the test process's channel (graded_main.cpp). Points: tests/NN_name.points.json.
@@ -12,6 +13,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <iostream>
 #include <set>
 #include <stdexcept>
@@ -28,14 +31,15 @@
 using namespace grade;
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "--container-probe") == 0) return containerProbeMain(argc, argv);  // sandbox.h
     const auto started = std::chrono::steady_clock::now();  // Gradescope's execution_time
     CLI::App app{"clothlab-grade — per-stage points from the graded tests"};
     std::vector<std::string> stages, only, answers;
-    std::string points_dir, kit_file, submission, class_dir, out_dir, work, reference = "all";
+    std::string points_dir, kit_file, submission, class_dir, out_dir, work, reference = "all", sandbox = "auto";
     std::string json_out, junit_out, gradescope_out, markdown_out, expect, mistake, why;
     std::vector<std::string> messages;
     int timeout_s = 30, jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    bool quiet = false, no_sandbox = false;
+    bool quiet = false, no_sandbox = false, which_sandbox = false;
     app.add_option("--stage", stages, "NN=EXECUTABLE: run this graded binary (self-checks of the suite)");
     app.add_option("--answers", answers, "With --stage: NN=FILE, the answers.json its graded experiments read");
     app.add_option("--kit", kit_file, "The grading kit the build wrote (build/grade-kit/kit.json)");
@@ -53,7 +57,10 @@ int main(int argc, char** argv) {
     app.add_option("--markdown", markdown_out, "Write the per-stage table as Markdown (e.g. for GitHub's job summary)");
     app.add_option("--timeout", timeout_s, "CPU seconds per test process (the wall clock limit is 3 times that: a busy machine slows a test down, it does not fail it)")->check(CLI::PositiveNumber);
     app.add_option("--jobs", jobs, "Processes at a time")->check(CLI::PositiveNumber);
-    app.add_flag("--no-sandbox", no_sandbox, "Run without bubblewrap (the points are then NOT trustworthy)");
+    app.add_flag("--no-sandbox", no_sandbox, "Run unconfined (the points are then NOT trustworthy)");
+    app.add_option("--sandbox", sandbox, "auto: bubblewrap where it works, else container mode (no namespaces: a user per program, Landlock, seccomp); or bubblewrap, container")
+        ->check(CLI::IsMember({"auto", "bubblewrap", "container"}));
+    app.add_flag("--which-sandbox", which_sandbox, "Say which confinement grading a submission gets here, and why (./lab doctor); exit 1 if none");
     app.add_option("--expect", expect, "Self-check of the test suite: all-pass, all-fail or some-fail")
         ->check(CLI::IsMember({"all-pass", "all-fail", "some-fail"}));
     app.add_option("--message", messages, "With --expect all-fail: every failure must contain one of these texts (repeatable)");
@@ -63,7 +70,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
 
     const int modes = !stages.empty() + !submission.empty() + !class_dir.empty();
-    if (modes != 1) die("give exactly one of --stage NN=EXE, --submission DIR, --class DIR");
+    if (modes != 1 && !which_sandbox) die("give exactly one of --stage NN=EXE, --submission DIR, --class DIR");
     // The report files: checked before grading (which takes minutes), so a typo costs nothing.
     for (const auto& [option, file] : {std::pair<std::string, std::string>{"--json", json_out}, {"--junit", junit_out},
                                        {"--gradescope", gradescope_out}, {"--markdown", markdown_out}}) {
@@ -73,39 +80,68 @@ int main(int argc, char** argv) {
         if (!fs::is_directory(dir)) die(file + ": " + option + ": the folder " + dir.string() + " does not exist");
         if (fs::is_directory(file)) die(file + ": " + option + ": is a folder, not a file");
     }
+    std::optional<Kit> kit;
+    if (!class_dir.empty() || !submission.empty() || (which_sandbox && !kit_file.empty())) {
+        if (kit_file.empty()) die("--submission and --class need --kit build/grade-kit/kit.json");
+        kit = loadKit(kit_file);
+    }
     // The sandbox: required for a submission or a class (unless --no-sandbox); the self-checks run
-    // binaries the build made, sandboxed where bwrap works.
+    // binaries the build made, under bubblewrap where it works (unless --sandbox asks for a mode).
     if (no_sandbox) {
-        setSandbox(false);
+        setConfinement(Confinement::none);
         std::fprintf(stderr, "warning: --no-sandbox: the submission runs unconfined; these points are not trustworthy\n");
-    } else if (const std::string problem = sandboxProblem(); !problem.empty()) {
-        if (stages.empty()) die("the sandbox does not work here: " + problem + " (--no-sandbox grades without it; the points are then not trustworthy)");
-        setSandbox(false);
+    } else {
+        // What container mode's probe must find out of reach: the instructor's files, the kit, the
+        // folders the grader writes to.
+        std::vector<fs::path> reference, unwritable;
+        if (kit) {
+            for (const auto& st : kit->stages) reference.insert(reference.end(), st.reference.begin(), st.reference.end());
+            unwritable = {fs::absolute(kit_file), fs::absolute(kit_file).parent_path()};
+        }
+        for (const auto& file : {json_out, junit_out, gradescope_out, markdown_out, work, out_dir})
+            if (!file.empty()) unwritable.push_back(file == work || file == out_dir ? fs::absolute(file) : fs::absolute(file).parent_path());
+        const fs::path tree = (kit ? kit->points_dir : fs::absolute(points_dir.empty() ? "tests" : points_dir)).parent_path();
+        Protected p = instructorFiles(tree, reference, unwritable);
+        if (kit) p.needed = {kit->include_dir, kit->main_objects.empty() ? kit->include_dir : kit->main_objects.front()};
+        if (!work.empty() || !out_dir.empty()) p.needed.push_back(fs::absolute(work.empty() ? out_dir : work));
+        p.students_apart = !class_dir.empty();
+        const bool self_check = !stages.empty() && !which_sandbox;
+        const std::string problem = chooseConfinement(self_check && sandbox == "auto" ? "bubblewrap" : sandbox, p);
+        if (which_sandbox) {
+            if (!problem.empty()) std::printf("none: the grader refuses to grade here: %s\n", problem.c_str());
+            else if (confinement() == Confinement::bubblewrap) std::printf("bubblewrap: it works here\n");
+            else std::printf("%s: %s\n", confinementName().c_str(), sandbox == "container" ? "asked for (--sandbox container)" : ("bubblewrap cannot run here: " + bubblewrapProblem()).c_str());
+            return problem.empty() ? 0 : 1;
+        }
+        if (!problem.empty()) {
+            if (!self_check || sandbox != "auto")
+                die("the sandbox does not work here: " + problem + " (--no-sandbox grades without it; the points are then not trustworthy)");
+            setConfinement(Confinement::none);
+        }
     }
 
     std::vector<StageResult> results;
-    if (!class_dir.empty() || !submission.empty()) {
-        if (kit_file.empty()) die("--submission and --class need --kit build/grade-kit/kit.json");
-        const Kit kit = loadKit(kit_file);
+    if (kit) {
         GradeOptions g;
         g.use_reference = reference == "all";
         g.only.insert(only.begin(), only.end());
         g.jobs = jobs;
         g.timeout_seconds = timeout_s;
         for (const auto& s : g.only)
-            if (std::none_of(kit.stages.begin(), kit.stages.end(), [&](const KitStage& k) { return k.stage == s; }))
+            if (std::none_of(kit->stages.begin(), kit->stages.end(), [&](const KitStage& k) { return k.stage == s; }))
                 die("--only " + s + ": no such stage");
         if (!class_dir.empty()) {
             if (out_dir.empty()) die("--class needs --out DIR (the gradebook goes there)");
             // Absolute: the class's build runs the compiler and linker in other folders.
             ClassOptions c{fs::absolute(class_dir), fs::absolute(out_dir), jobs, g};
-            gradeClass(kit, c);
+            gradeClass(*kit, c);
+            std::printf("sandbox: %s\n", confinementName().c_str());
             return 0;
         }
         if (work.empty()) die("--submission needs --work DIR (its build folder)");
         g.work = fs::absolute(work);
         try {
-            results = gradeSubmission(kit, fs::absolute(submission), g);
+            results = gradeSubmission(*kit, fs::absolute(submission), g);
         } catch (const std::runtime_error& e) {
             die(e.what());
         }
@@ -129,12 +165,21 @@ int main(int argc, char** argv) {
     }
 
     printTable(results, !quiet);
-    if (!json_out.empty()) writeFile(json_out, resultsJson(results).dump(2) + "\n"), std::printf("wrote %s\n", json_out.c_str());
+    std::printf("sandbox: %s\n", confinementName().c_str());
+    if (!json_out.empty()) {
+        json j = resultsJson(results);
+        j["sandbox"] = confinementName();
+        writeFile(json_out, j.dump(2) + "\n"), std::printf("wrote %s\n", json_out.c_str());
+    }
     if (!junit_out.empty()) writeJunit(junit_out, results), std::printf("wrote %s\n", junit_out.c_str());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    if (!gradescope_out.empty())
-        writeFile(gradescope_out, gradescopeJson(results, seconds).dump(2) + "\n"), std::printf("wrote %s\n", gradescope_out.c_str());
-    if (!markdown_out.empty()) writeFile(markdown_out, markdownTable(results)), std::printf("wrote %s\n", markdown_out.c_str());
+    if (!gradescope_out.empty()) {
+        json j = gradescopeJson(results, seconds);
+        j["output"] = j["output"].get<std::string>() + "\nsandbox: " + confinementName();
+        writeFile(gradescope_out, j.dump(2) + "\n"), std::printf("wrote %s\n", gradescope_out.c_str());
+    }
+    if (!markdown_out.empty())
+        writeFile(markdown_out, markdownTable(results) + "\nsandbox: " + confinementName() + "\n"), std::printf("wrote %s\n", markdown_out.c_str());
     if (expect.empty()) return 0;
 
     // Self-check mode: say what does not hold and exit non-zero.

@@ -1,27 +1,65 @@
 #include "sandbox.h"
 
 #include <fcntl.h>
-#include <sched.h>
+#include <linux/filter.h>
+#include <linux/landlock.h>
+#include <linux/seccomp.h>
 #include <poll.h>
+#include <pwd.h>
+#include <sched.h>
+#include <seccomp.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
+#include <mutex>
 #include <set>
+#include <thread>
 
 #include "common.h"
+
+// Landlock access rights newer than Debian 12's kernel headers (the kernel says which it has).
+#ifndef LANDLOCK_ACCESS_FS_REFER
+#define LANDLOCK_ACCESS_FS_REFER (1ULL << 13)
+#endif
+#ifndef LANDLOCK_ACCESS_FS_TRUNCATE
+#define LANDLOCK_ACCESS_FS_TRUNCATE (1ULL << 14)
+#endif
+#ifndef LANDLOCK_ACCESS_FS_IOCTL_DEV
+#define LANDLOCK_ACCESS_FS_IOCTL_DEV (1ULL << 15)
+#endif
 
 namespace grade {
 
 namespace {
 
-bool g_sandbox = true;
+Confinement g_confinement = Confinement::bubblewrap;
 constexpr uid_t kNobody = 65534;
+
+// A defence of container mode switched off, to show that an attack gets through without it: only in
+// the test tool clothlab-grade-weakened (tests/sandbox/), built with CLOTHLAB_SANDBOX_TEST_SWITCHES;
+// CLOTHLAB_WEAKEN names the defences (landlock, seccomp, uid). Never compiled into clothlab-grade.
+#ifdef CLOTHLAB_SANDBOX_TEST_SWITCHES
+bool weakened(const char* defence) {
+    const char* w = std::getenv("CLOTHLAB_WEAKEN");
+    return w && std::strstr(w, defence);
+}
+#else
+constexpr bool weakened(const char*) { return false; }
+#endif
 
 /// Processes the user `uid` has now (RLIMIT_NPROC counts them all, so the limit is this + allowance).
 int processesOf(uid_t uid) {
@@ -72,21 +110,286 @@ void setLimit(int resource, rlim_t value) {
     ::setrlimit(resource, &r);
 }
 
+// ---- container mode ----------------------------------------------------------------------------
+
+/// Root's own folder of the container mode: a lock file per user (which run holds it) and the runs'
+/// scratch folders. Mode 0711: a run reaches its scratch folder, lists nothing, creates nothing here.
+const fs::path kSandboxDir = "/tmp/clothlab-sandbox";
+/// The users of the runs: kUsers ids from kFirstUid, in Debian's range of globally allocated system
+/// ids (60000-64999, below nobody), inside the 65536 ids a user-namespaced Docker maps.
+constexpr uid_t kFirstUid = 64200;
+constexpr int kUsers = 512;
+
+/// Where a run may have left files of its own: the world-writable folders (and our scratch folders).
+const char* const kLeftoverDirs[] = {"/tmp", "/var/tmp", "/dev/shm", "/tmp/clothlab-sandbox"};
+
+void checkSandboxDir() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        ::mkdir(kSandboxDir.c_str(), 0711);
+        struct stat st {};
+        if (::lstat(kSandboxDir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != 0 || (st.st_mode & 07777) != 0711) {
+            // Not ours (made by someone else, or a link): never use it.
+            die(kSandboxDir.string() + ": (folder): must be root's own folder with mode 0711 (container mode); remove it and grade again");
+        }
+    });
+}
+
+/// The real and saved user of the child that kills the processes of run user `uid`: an id of its own
+/// (never a run's, never root), kUsers above the runs' ids.
+uid_t killerOf(uid_t uid) { return uid + kUsers; }
+
+/// Kills every process of `uid`: a child with `uid` as its effective user and killerOf(uid) as its real
+/// and saved one sends SIGKILL to every process it may signal (kill(-1)). A signal needs the sender's
+/// real or effective user to be the target's real or saved one, and a process whose three users are
+/// not root has no capability: so exactly `uid`'s processes die, and none of them may signal the
+/// killer back. Never root as a real user here: kill(-1) would reach every root process.
+void killAllOf(uid_t uid) {
+    const uid_t killer = killerOf(uid);
+    if (uid == 0 || killer == 0) die("container mode: refusing to kill the processes of root");
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        if (::syscall(SYS_setresuid, killer, uid, killer) != 0) ::_exit(1);
+        if (::getuid() != killer || ::geteuid() != uid || ::getuid() == 0) ::_exit(1);
+        for (int round = 0; round < 3; ++round) {  // kill(-1) spares only the caller (and init)
+            if (::kill(-1, SIGKILL) != 0) break;     // ESRCH: nobody left
+            const struct timespec ms {0, 1000000};
+            ::nanosleep(&ms, nullptr);
+        }
+        ::_exit(0);
+    }
+    if (pid > 0) ::waitpid(pid, nullptr, 0);
+}
+
+/// Removes what `uid` owns at the top of the leftover folders (removal never follows a link).
+void removeLeftovers(uid_t uid) {
+    for (const char* dir : kLeftoverDirs) {
+        std::error_code ec;
+        for (const auto& e : fs::directory_iterator(dir, ec)) {
+            struct stat st {};
+            if (::lstat(e.path().c_str(), &st) == 0 && st.st_uid == uid) fs::remove_all(e.path(), ec);
+        }
+    }
+}
+
+/// Hands a folder a run wrote (and everything in it) to root, without group or world write permission
+/// and set-id bits: no later run (another user) can change what this one wrote. Never follows a link.
+void handToRoot(const fs::path& dir) {
+    const auto seal = [](const fs::path& p) {
+        struct stat st {};
+        if (::lstat(p.c_str(), &st) != 0) return;
+        if (::lchown(p.c_str(), 0, 0) != 0) die(p.string() + ": (file): cannot hand it back to root");
+        if (!S_ISLNK(st.st_mode)) ::chmod(p.c_str(), st.st_mode & 0755);
+    };
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec))
+        seal(it->path());
+    seal(dir);
+}
+
+/// The ids a run may use: not a user or group this machine names (/etc/passwd, /etc/group).
+bool idIsFree(uid_t id) {
+    static const std::set<unsigned> named = [] {
+        std::set<unsigned> s;
+        for (const char* file : {"/etc/passwd", "/etc/group"}) {
+            std::ifstream in(file);
+            for (std::string line; std::getline(in, line);) {
+                const size_t a = line.find(':'), b = a == std::string::npos ? a : line.find(':', a + 1);
+                if (b != std::string::npos) s.insert(static_cast<unsigned>(std::strtoul(line.c_str() + b + 1, nullptr, 10)));
+            }
+        }
+        return s;
+    }();
+    return !named.count(id);
+}
+
+/// The user (and group, the same number) of one run in container mode, held while the run lasts: a
+/// lock (flock) on kSandboxDir/ID.lock keeps every other run, of this grader or another, off it.
+struct RunUser {
+    uid_t uid = 0;
+    int lock = -1;
+    fs::path scratch;  ///< its own folder: HOME, TMPDIR and working folder
+};
+
+RunUser leaseUser() {
+    checkSandboxDir();
+    static std::atomic<unsigned> runs{0};
+    RunUser u;
+    const unsigned n = runs++;
+    u.scratch = kSandboxDir / ("run-" + std::to_string(::getpid()) + "-" + std::to_string(n));
+    if (weakened("uid")) {  // test tool only: every run as one user (bubblewrap's nobody, without a PID namespace)
+        u.uid = kFirstUid - 1;
+    } else {
+        for (int attempt = 0; u.lock < 0; ++attempt) {
+            for (int i = 0; i < kUsers && u.lock < 0; ++i) {
+                const uid_t id = kFirstUid + static_cast<uid_t>((static_cast<unsigned>(::getpid()) + n + i) % kUsers);
+                if (!idIsFree(id) || !idIsFree(killerOf(id))) continue;
+                const int fd = ::open((kSandboxDir / (std::to_string(id) + ".lock")).c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+                if (fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) == 0) u.uid = id, u.lock = fd;
+                else if (fd >= 0) ::close(fd);
+            }
+            if (u.lock < 0 && attempt > 6000) die("container mode: no free user for a run (" + std::to_string(kUsers) + " runs at once?)");
+            if (u.lock < 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        killAllOf(u.uid);  // what a grader that died left running
+        removeLeftovers(u.uid);
+    }
+    if (::mkdir(u.scratch.c_str(), 0700) != 0 || ::lchown(u.scratch.c_str(), u.uid, u.uid) != 0)
+        die(u.scratch.string() + ": (folder): cannot make the run's scratch folder");
+    return u;
+}
+
+/// Ends a run's hold on its user. No PID namespace dies with the run: every process of the user is
+/// killed first; then what it wrote in `mounts` becomes root's, before anything reads it; what it
+/// left elsewhere is removed.
+void releaseUser(RunUser& u, const std::vector<Mount>& mounts) {
+    if (u.lock >= 0) killAllOf(u.uid);
+    for (const auto& m : mounts)
+        if (m.writable) handToRoot(m.host);
+    if (u.lock >= 0) removeLeftovers(u.uid);
+    std::error_code ec;
+    fs::remove_all(u.scratch, ec);
+    if (u.lock >= 0) ::close(u.lock);  // unlocks
+    u.lock = -1;
+}
+
+/// The Landlock rights this kernel handles (its ABI version says which).
+uint64_t landlockHandled() {
+    const int abi = landlockAbi();
+    uint64_t h = (LANDLOCK_ACCESS_FS_MAKE_SYM << 1) - 1;  // ABI 1: execute ... make_sym
+    if (abi >= 2) h |= LANDLOCK_ACCESS_FS_REFER;
+    if (abi >= 3) h |= LANDLOCK_ACCESS_FS_TRUNCATE;
+    if (abi >= 5) h |= LANDLOCK_ACCESS_FS_IOCTL_DEV;
+    return h;
+}
+
+constexpr uint64_t kRead = LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR;
+constexpr uint64_t kExecute = LANDLOCK_ACCESS_FS_EXECUTE;
+constexpr uint64_t kWrite = LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV |
+                            LANDLOCK_ACCESS_FS_REMOVE_DIR | LANDLOCK_ACCESS_FS_REMOVE_FILE | LANDLOCK_ACCESS_FS_MAKE_DIR |
+                            LANDLOCK_ACCESS_FS_MAKE_REG | LANDLOCK_ACCESS_FS_MAKE_SYM | LANDLOCK_ACCESS_FS_MAKE_FIFO |
+                            LANDLOCK_ACCESS_FS_MAKE_SOCK | LANDLOCK_ACCESS_FS_REFER;
+/// The rights Landlock allows on a file (the others are about folders).
+constexpr uint64_t kFileRights = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_WRITE_FILE |
+                                 LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV;
+
+/// Allows `rights` on `path` (and below it, for a folder); a path that does not exist is left out.
+void allow(int ruleset, const fs::path& path, uint64_t rights) {
+    const int fd = ::open(path.c_str(), O_PATH | O_CLOEXEC);
+    if (fd < 0) return;
+    struct stat st {};
+    if (::fstat(fd, &st) == 0) {
+        struct landlock_path_beneath_attr rule {};
+        rule.allowed_access = rights & landlockHandled() & (S_ISDIR(st.st_mode) ? ~0ULL : kFileRights);
+        rule.parent_fd = fd;
+        if (::syscall(SYS_landlock_add_rule, ruleset, LANDLOCK_RULE_PATH_BENEATH, &rule, 0) != 0)
+            die(path.string() + ": (Landlock): cannot add the rule: " + std::strerror(errno));
+    }
+    ::close(fd);
+}
+
+/// The run's Landlock rules (-1: no Landlock here): read and execute the system's programs and
+/// libraries and the read-only mounts, read and write the writable mounts and the scratch folder.
+int landlockRules(const SandboxRun& run, const fs::path& scratch) {
+    if (landlockAbi() == 0 || weakened("landlock")) return -1;
+    struct landlock_ruleset_attr attr {};
+    attr.handled_access_fs = landlockHandled();
+    const int ruleset = static_cast<int>(::syscall(SYS_landlock_create_ruleset, &attr, sizeof attr, 0));
+    if (ruleset < 0) die(std::string("container mode: cannot make a Landlock ruleset: ") + std::strerror(errno));
+    for (const char* sys : {"/usr", "/lib", "/lib32", "/lib64", "/libx32", "/bin", "/sbin", "/etc/ld.so.cache"})
+        allow(ruleset, sys, kRead | kExecute);
+    allow(ruleset, "/dev/null", kRead | kWrite);
+    for (const char* dev : {"/dev/zero", "/dev/random", "/dev/urandom"}) allow(ruleset, dev, kRead);
+    for (const auto& m : run.mounts) allow(ruleset, m.host, m.writable ? kRead | kWrite : kRead | kExecute);
+    allow(ruleset, scratch, kRead | kWrite);
+    return ruleset;
+}
+
+/// The container mode's seccomp filter, as a BPF program made once (a child after fork() may not
+/// allocate: the grader has threads). Every system call is allowed except: sockets (no network; a
+/// socketpair stays allowed), tracing and reading other processes' memory, namespaces and mounts,
+/// io_uring (its requests would pass the filter unseen), eBPF, perf events, userfaultfd, keyrings,
+/// System V IPC and POSIX message queues (no IPC namespace). clone3 fails with ENOSYS (so that the C
+/// library falls back to clone, whose flags the filter reads), clone with a CLONE_NEW* flag with EPERM.
+const struct sock_fprog* containerFilter() {
+    static std::vector<struct sock_filter> code;
+    static struct sock_fprog prog {};
+    static std::once_flag once;
+    std::call_once(once, [] {
+        scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ALLOW);
+        bool ok = ctx && seccomp_attr_set(ctx, SCMP_FLTATR_CTL_NNP, 0) == 0;  // the child sets no_new_privs itself
+        for (int sys : {SCMP_SYS(socket), SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev),
+                        SCMP_SYS(pidfd_getfd), SCMP_SYS(kcmp), SCMP_SYS(unshare), SCMP_SYS(setns), SCMP_SYS(mount),
+                        SCMP_SYS(umount2), SCMP_SYS(pivot_root), SCMP_SYS(chroot), SCMP_SYS(open_tree), SCMP_SYS(move_mount),
+                        SCMP_SYS(fsopen), SCMP_SYS(fsconfig), SCMP_SYS(fsmount), SCMP_SYS(fspick), SCMP_SYS(mount_setattr),
+                        SCMP_SYS(io_uring_setup), SCMP_SYS(io_uring_enter), SCMP_SYS(io_uring_register), SCMP_SYS(bpf),
+                        SCMP_SYS(perf_event_open), SCMP_SYS(userfaultfd), SCMP_SYS(keyctl), SCMP_SYS(add_key),
+                        SCMP_SYS(request_key), SCMP_SYS(shmget), SCMP_SYS(shmat), SCMP_SYS(semget), SCMP_SYS(msgget),
+                        SCMP_SYS(mq_open)})
+            ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), sys, 0) == 0;
+        for (scmp_datum_t flag : {CLONE_NEWNS, CLONE_NEWCGROUP, CLONE_NEWUTS, CLONE_NEWIPC, CLONE_NEWUSER, CLONE_NEWPID, CLONE_NEWNET})
+            ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag)) == 0;
+        ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0) == 0;
+        // The program as bytes: through a pipe (libseccomp 2.5 exports to a descriptor only).
+        int pipe_fds[2];
+        ok = ok && ::pipe2(pipe_fds, O_CLOEXEC) == 0;
+        if (ok) {
+            ok = seccomp_export_bpf(ctx, pipe_fds[1]) == 0;
+            ::close(pipe_fds[1]);
+            std::string bytes;
+            char buf[4096];
+            for (ssize_t n; (n = ::read(pipe_fds[0], buf, sizeof buf)) > 0;) bytes.append(buf, static_cast<size_t>(n));
+            ::close(pipe_fds[0]);
+            code.resize(bytes.size() / sizeof(struct sock_filter));
+            std::memcpy(code.data(), bytes.data(), code.size() * sizeof(struct sock_filter));
+            ok = ok && !code.empty() && bytes.size() % sizeof(struct sock_filter) == 0;
+        }
+        if (ctx) seccomp_release(ctx);
+        if (!ok) die("container mode: cannot build the seccomp filter (libseccomp)");
+        prog.len = static_cast<unsigned short>(code.size());
+        prog.filter = code.data();
+    });
+    return &prog;
+}
+
+/// Writes a line to stderr from a child after fork() (async-signal-safe), then ends it with 126.
+[[noreturn]] void childFails(const char* step) {
+    const char* what = "clothlab-grade: cannot confine the program: ";
+    (void)!::write(2, what, std::strlen(what));
+    (void)!::write(2, step, std::strlen(step));
+    (void)!::write(2, "\n", 1);
+    ::_exit(126);
+}
+
 }  // namespace
 
-void setSandbox(bool on) { g_sandbox = on; }
-bool sandboxOn() { return g_sandbox; }
+void setConfinement(Confinement c) { g_confinement = c; }
+Confinement confinement() { return g_confinement; }
 
-std::string sandboxProblem() {
+std::string confinementName() {
+    switch (g_confinement) {
+        case Confinement::bubblewrap: return "bubblewrap";
+        case Confinement::container:
+            return landlockAbi() > 0 ? "container mode (a user of its own per program, Landlock, seccomp; lacks PID and network "
+                                       "namespaces and a size limit on the scratch folder)"
+                                     : "container mode without Landlock (a user of its own per program, seccomp, reads confined by "
+                                       "file permissions only; lacks Landlock, PID and network namespaces and a size limit on the "
+                                       "scratch folder)";
+        case Confinement::none: break;
+    }
+    return "none (the programs run unconfined, with limits only)";
+}
+
+std::string bubblewrapProblem() {
     static const std::string problem = [] {
         SandboxRun probe;
         probe.argv = {"/usr/bin/true"};
         probe.timeout_seconds = 20;
         probe.log = fs::temp_directory_path() / ("clothlab-sandbox-probe-" + std::to_string(::getpid()) + ".log");
-        const bool was = g_sandbox;
-        g_sandbox = true;
+        const Confinement was = g_confinement;
+        g_confinement = Confinement::bubblewrap;
         const RunOutcome r = runSandboxed(probe);
-        g_sandbox = was;
+        g_confinement = was;
         std::string log = readFile(probe.log, 2000);
         fs::remove(probe.log);
         if (r.exit_code == 0) return std::string();
@@ -96,19 +399,133 @@ std::string sandboxProblem() {
     return problem;
 }
 
+int landlockAbi() {
+    static const int abi = [] {
+        const long v = ::syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
+        return v < 0 ? 0 : static_cast<int>(v);
+    }();
+    return abi;
+}
+
+Protected instructorFiles(const fs::path& tree, const std::vector<fs::path>& reference, const std::vector<fs::path>& unwritable) {
+    Protected p;
+    const bool has_solutions = fs::is_directory(tree / "solutions");
+    for (const char* dir : {"solutions", "tests/instructor"}) {
+        std::vector<fs::path> files;
+        std::error_code ec;
+        for (fs::recursive_directory_iterator it(tree / dir, ec), end; !ec && it != end && files.size() < 2000; it.increment(ec))
+            if (it->is_regular_file(ec)) files.push_back(it->path());
+        std::sort(files.begin(), files.end());
+        p.unreadable.insert(p.unreadable.end(), files.begin(), files.end());
+    }
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(tree / "tests", ec))
+        if (e.path().string().size() > 12 && e.path().string().rfind(".points.json") == e.path().string().size() - 12) {
+            p.unreadable.push_back(e.path());
+            p.unwritable.push_back(e.path());
+        }
+    if (has_solutions) p.unreadable.insert(p.unreadable.end(), reference.begin(), reference.end());
+    p.unwritable.push_back(tree);
+    p.unwritable.insert(p.unwritable.end(), unwritable.begin(), unwritable.end());
+    return p;
+}
+
+std::string containerProblem(const Protected& p) {
+    if (::geteuid() != 0) return "container mode needs the grader to run as root (it runs each program as a user of its own)";
+    const std::string mode = landlockAbi() > 0 ? "container mode" : "container mode without Landlock";
+    if (weakened("")) {  // test tool only (any CLOTHLAB_WEAKEN): a defence is off on purpose, no probe
+        std::fprintf(stderr, "warning: clothlab-grade-weakened: CLOTHLAB_WEAKEN=%s: %s is not probed\n", std::getenv("CLOTHLAB_WEAKEN"), mode.c_str());
+        return "";
+    }
+    for (const auto& path : p.needed) {  // Landlock adds no permission: a run's user must pass every folder above
+        std::error_code ec;
+        for (fs::path q = fs::absolute(path); !q.empty(); q = q.parent_path()) {
+            struct stat st {};
+            if (::stat(q.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && !(st.st_mode & S_IXOTH))
+                return mode + ": the programs cannot reach " + path.string() + ": " + q.string() + " lets no other user pass (chmod o+x it)";
+            if (q == q.root_path()) break;
+        }
+    }
+    if (p.students_apart && landlockAbi() == 0)
+        return mode + ": a class cannot be graded, one student's code could read another's files (grade one submission at a time)";
+    SandboxRun probe;
+    const fs::path self = fs::canonical("/proc/self/exe");
+    probe.argv = {self.string(), "--container-probe"};
+    for (const auto& f : p.unreadable) probe.argv.insert(probe.argv.end(), {"r", f.string()});
+    for (const auto& f : p.unwritable) probe.argv.insert(probe.argv.end(), {"w", f.string()});
+    probe.mounts = {{self, self, false}};
+    probe.timeout_seconds = 30;
+    probe.log = fs::temp_directory_path() / ("clothlab-container-probe-" + std::to_string(::getpid()) + ".log");
+    const Confinement was = g_confinement;
+    g_confinement = Confinement::container;
+    const RunOutcome r = runSandboxed(probe);
+    g_confinement = was;
+    const std::string log = readFile(probe.log, 1u << 20);
+    fs::remove(probe.log);
+    if (r.exit_code == 0 && log.find("probe: every guarantee holds") != std::string::npos) return "";
+    const size_t hole = log.find("hole: ");
+    if (hole == std::string::npos)
+        return mode + ": the probe did not run (exit " + std::to_string(r.exit_code) + "): " + firstLines(log, 1, "");
+    return mode + ": " + log.substr(hole + 6, log.find('\n', hole) - hole - 6) +
+           (landlockAbi() > 0 ? "" : " (make it unreachable for other users, e.g. chmod o-rwx, or grade where Landlock or bubblewrap works)");
+}
+
+std::string chooseConfinement(const std::string& wanted, const Protected& p) {
+    g_confinement = Confinement::none;
+    std::string bubblewrap;
+    if (wanted != "container") {
+        bubblewrap = bubblewrapProblem();
+        if (bubblewrap.empty()) return g_confinement = Confinement::bubblewrap, "";
+        if (wanted == "bubblewrap") return bubblewrap;
+    }
+    const std::string container = containerProblem(p);
+    if (container.empty()) {
+        ::umask(022);  // what the grader writes for a run (sources, objects) its user can read
+        return g_confinement = Confinement::container, "";
+    }
+    return bubblewrap.empty() ? container : "bubblewrap: " + bubblewrap + "; " + container;
+}
+
+int containerProbeMain(int argc, char** argv) {
+    int holes = 0;
+    const auto hole = [&](const std::string& what) { std::printf("hole: %s\n", what.c_str()), ++holes; };
+    for (int i = 2; i + 1 < argc; i += 2) {
+        const std::string kind = argv[i], path = argv[i + 1];
+        if (kind == "r") {
+            const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+            if (fd >= 0) hole("the submission could read " + path), ::close(fd);
+        } else if (fs::is_directory(path)) {
+            const std::string file = path + "/.clothlab-probe-" + std::to_string(::getpid());
+            const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+            if (fd >= 0) hole("the submission could write into " + path), ::close(fd), ::unlink(file.c_str());
+        } else {
+            const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);  // no O_TRUNC: nothing changes
+            if (fd >= 0) hole("the submission could write " + path), ::close(fd);
+        }
+    }
+    const int s = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (s >= 0) hole("the submission could open an AF_INET socket (the network)"), ::close(s);
+    if (::kill(::getppid(), 0) == 0) hole("the submission could signal the grader");
+    if (::getuid() == 0) hole("the submission would run as root");
+    if (holes == 0) std::printf("probe: every guarantee holds\n");
+    return holes == 0 ? 0 : 1;
+}
+
 void makeWritableForSandbox(const fs::path& dir) {
     fs::create_directories(dir);
-    if (::geteuid() == 0) {
-        if (::chown(dir.c_str(), kNobody, kNobody) != 0) die(dir.string() + ": (folder): cannot hand it to user nobody");
-    } else {
+    if (::geteuid() != 0) {
         fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add);
+    } else if (g_confinement == Confinement::container) {
+        if (::lchown(dir.c_str(), 0, 0) != 0) die(dir.string() + ": (folder): cannot make it root's");  // each run gets it while it lasts
+    } else if (::chown(dir.c_str(), kNobody, kNobody) != 0) {
+        die(dir.string() + ": (folder): cannot hand it to user nobody");
     }
 }
 
-/// Without the sandbox the program sees the host's paths: a path inside a mount (at the start of an
-/// argument or after its '=') becomes the mount's host path.
+/// Outside bubblewrap the program sees the host's paths: a path inside a mount (at the start of an
+/// argument, after the '=' of --NAME=, or after -I) becomes the mount's host path.
 std::string outside(const std::string& arg, const std::vector<Mount>& mounts) {
-    const size_t at = arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos ? arg.find('=') + 1 : 0;
+    const size_t at = arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos ? arg.find('=') + 1 : arg.rfind("-I", 0) == 0 ? 2 : 0;
     for (const auto& m : mounts) {
         const std::string in = m.inside.string();
         if (arg.compare(at, in.size(), in) == 0 && (arg.size() == at + in.size() || arg[at + in.size()] == '/'))
@@ -119,12 +536,22 @@ std::string outside(const std::string& arg, const std::vector<Mount>& mounts) {
 
 RunOutcome runSandboxed(const SandboxRun& run) {
     RunOutcome out;
+    const Confinement mode = g_confinement;
+    const bool bubblewrap = mode == Confinement::bubblewrap, container = mode == Confinement::container;
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe calls.
-    std::vector<std::string> args = g_sandbox ? bwrapArgs(run) : run.argv;
+    RunUser user;
+    if (container) user = leaseUser();
+    std::vector<std::string> args = bubblewrap ? bwrapArgs(run) : run.argv;
     std::vector<std::string> env_text;
-    if (!g_sandbox) {
+    std::string workdir;
+    if (!bubblewrap) {
         for (auto& a : args) a = outside(a, run.mounts);
-        for (char** e = ::environ; *e; ++e) env_text.emplace_back(*e);
+        if (container) {
+            env_text = {"PATH=/usr/bin", "HOME=" + user.scratch.string(), "TMPDIR=" + user.scratch.string()};
+            workdir = run.workdir == "/tmp" ? user.scratch.string() : outside(run.workdir.string(), run.mounts);
+        } else {
+            for (char** e = ::environ; *e; ++e) env_text.emplace_back(*e);
+        }
         for (const auto& [name, value] : run.env) env_text.push_back(name + "=" + outside(value, run.mounts));
     }
     std::vector<char*> argv, envp;
@@ -132,13 +559,19 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     argv.push_back(nullptr);
     for (const auto& s : env_text) envp.push_back(const_cast<char*>(s.c_str()));
     envp.push_back(nullptr);
-    const uid_t runner = ::geteuid() == 0 && g_sandbox ? kNobody : ::geteuid();
-    const rlim_t nproc = static_cast<rlim_t>(processesOf(runner) + run.limits.processes + 4);  // + bwrap's own
+    const int ruleset = container ? landlockRules(run, user.scratch) : -1;
+    const struct sock_fprog* filter = container && !weakened("seccomp") ? containerFilter() : nullptr;
+    if (container)
+        for (const auto& m : run.mounts)
+            if (m.writable && ::lchown(m.host.c_str(), user.uid, user.uid) != 0) die(m.host.string() + ": (folder): cannot hand it to the run's user");
+    const uid_t runner = container ? user.uid : ::geteuid() == 0 && bubblewrap ? kNobody : ::geteuid();
+    const rlim_t nproc = static_cast<rlim_t>(processesOf(runner) + run.limits.processes + (bubblewrap ? 4 : 0));  // + bwrap's own
     const int log = ::open(run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (log < 0) die(run.log.string() + ": (file): cannot write the log");
     int report_pipe[2] = {-1, -1};
     if (run.channel && ::pipe2(report_pipe, O_CLOEXEC) != 0) die("cannot create a pipe");
-    const char* program = g_sandbox ? "bwrap" : argv[0];
+    const char* program = bubblewrap ? "bwrap" : argv[0];
+    const uid_t id = user.uid;
 
     const pid_t pid = ::fork();
     if (pid < 0) die("fork failed");
@@ -169,11 +602,24 @@ RunOutcome runSandboxed(const SandboxRun& run) {
         setLimit(RLIMIT_NOFILE, static_cast<rlim_t>(run.limits.open_files));
         setLimit(RLIMIT_CORE, 0);
         setLimit(RLIMIT_NPROC, nproc);
-        if (g_sandbox) ::execvp(program, argv.data());
+        if (container) {
+            // The run's own user and group (raw system calls: this process alone, no C library
+            // bookkeeping across threads), which drops every capability; then no_new_privs, Landlock, seccomp.
+            ::umask(022);
+            if (::syscall(SYS_setgroups, 0, nullptr) != 0) childFails("setgroups");
+            if (::syscall(SYS_setresgid, id, id, id) != 0) childFails("setresgid");
+            if (::syscall(SYS_setresuid, id, id, id) != 0) childFails("setresuid");
+            if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) childFails("no_new_privs");
+            if (ruleset >= 0 && ::syscall(SYS_landlock_restrict_self, ruleset, 0) != 0) childFails("Landlock");
+            if (filter && ::prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, filter) != 0) childFails("seccomp");
+            if (::chdir(workdir.c_str()) != 0) childFails("chdir to its scratch folder");
+        }
+        if (bubblewrap) ::execvp(program, argv.data());
         else ::execvpe(program, argv.data(), envp.data());
         ::_exit(127);
     }
     ::close(log);
+    if (ruleset >= 0) ::close(ruleset);
     if (run.channel) ::close(report_pipe[1]);
     // Read the report channel (if any) until the deadline; then reap.
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(run.timeout_seconds);
@@ -209,6 +655,7 @@ RunOutcome runSandboxed(const SandboxRun& run) {
         ::close(report_pipe[0]);
     }
     ::kill(-pid, SIGKILL);  // whatever the program left in its group
+    if (container) releaseUser(user, run.mounts);
     out.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 
     return out;

@@ -1,11 +1,23 @@
-// Running untrusted programs (a submission's compiler run, its linked test binary) in a sandbox.
+// Running untrusted programs (a submission's compiler run, its linked test binary) confined.
 //
-// With the sandbox on, a program runs under bubblewrap (bwrap, Debian package `bubblewrap`) in new
-// PID, network, IPC, UTS and cgroup namespaces (and a user namespace when the grader is not root),
-// with no capabilities, as user `nobody` when the grader runs as root, with no network, a fresh /tmp
-// and only the paths in `mounts` (plus /usr, read-only). Limits (setrlimit): CPU seconds, address
-// space, file size, open files, processes. A wall-clock timeout kills the whole sandbox (every
-// process in its PID namespace dies with it).
+// Two confinements (docs/grading.md, "Two confinements"), chosen once by the CLI:
+//
+//  - bubblewrap (bwrap, Debian package `bubblewrap`): new PID, network, IPC, UTS and cgroup namespaces
+//    (and a user namespace when the grader is not root), no capabilities, as user `nobody` when the
+//    grader runs as root, no network, a fresh /tmp and only the paths in `mounts` (plus /usr,
+//    read-only). A wall-clock timeout kills the whole sandbox (its PID namespace dies with it).
+//  - container mode, where no namespace can be made (Docker's default confinement: Gradescope,
+//    PrairieLearn) and the grader is root: each program runs as a user and group of its own (one per
+//    run at a time, never shared, no supplementary groups), with no_new_privs, Landlock rules where the
+//    kernel has them (read and execute /usr and the run's read-only paths, write only its writable
+//    paths and its own scratch folder, which is also its HOME and TMPDIR), and a seccomp filter (no
+//    sockets, no ptrace or process_vm_*, no new namespaces or mounts, no io_uring, no System V IPC).
+//    The programs see the host's paths: a path of `mounts` in the arguments and environment becomes
+//    the mount's host path. When the run ends (or times out) every process of its user is killed, what
+//    it wrote in its writable paths is handed to root, and whatever it left in /tmp, /var/tmp and
+//    /dev/shm is removed.
+//
+// Both apply the limits (setrlimit): CPU seconds, address space, file size, open files, processes.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -18,7 +30,7 @@ namespace fs = std::filesystem;
 
 struct Mount {
     fs::path host;    ///< file or folder outside
-    fs::path inside;  ///< where the program sees it
+    fs::path inside;  ///< where the program sees it (bubblewrap; container mode: the host path)
     bool writable = false;
 };
 
@@ -36,7 +48,7 @@ struct SandboxRun {
     Limits limits;
     int timeout_seconds = 60;  ///< wall clock
     fs::path log;              ///< stdout and stderr of the program
-    fs::path workdir = "/tmp";
+    fs::path workdir = "/tmp";  ///< "/tmp": the run's own scratch folder in container mode
     bool channel = false;  ///< open the graded-test channel (fd 3: the test process's report, see graded_main.cpp)
     int cpu = -1;          ///< ≥ 0: run on this CPU only (a test and its submission process share one)
     std::vector<std::pair<std::string, std::string>> env;  ///< variables set for the program (the rest is cleared)
@@ -48,16 +60,53 @@ struct RunOutcome {
     std::string report;   ///< what the program wrote to fd 3 (channel)
 };
 
-/// Whether programs run sandboxed (bwrap) or directly (still with limits): set once, by the CLI.
-void setSandbox(bool on);
-bool sandboxOn();
-/// Empty when bwrap works here, else why not (one line).
-std::string sandboxProblem();
+enum class Confinement { none, bubblewrap, container };
+
+/// How programs run: set once, by the CLI (default bubblewrap). `none` still applies the limits.
+void setConfinement(Confinement c);
+Confinement confinement();
+/// "bubblewrap", "container mode (...what it lacks...)" or "none (...)": for the reports.
+std::string confinementName();
+
+/// Empty when bwrap can make its sandbox here, else why not (one line).
+std::string bubblewrapProblem();
+
+/// Whether the kernel lets this process use Landlock (and which ABI version; 0: no).
+int landlockAbi();
+
+/// What a submission's programs must not touch, given to the container mode's probe.
+struct Protected {
+    std::vector<fs::path> unreadable;  ///< files a program must fail to open for reading
+    std::vector<fs::path> unwritable;  ///< files a program must fail to open for writing, folders it must fail to create a file in
+    std::vector<fs::path> needed;      ///< paths the programs read (the kit, the work folder): every folder above must let others pass
+    bool students_apart = false;       ///< several students' submissions at once (--class): needs Landlock in container mode
+};
+
+/// The instructor's files under `tree` (the folder holding the points files' tests/): every file of
+/// solutions/ and tests/instructor/, the points files, and `reference` (objects built from solutions/:
+/// protected only when the tree has solutions/; the student copy's reference objects are the students'
+/// own files). Unwritable: the tree itself, the points files, and `unwritable`.
+Protected instructorFiles(const fs::path& tree, const std::vector<fs::path>& reference, const std::vector<fs::path>& unwritable);
+
+/// Empty when container mode holds here: the grader is root, every folder above `p.needed` lets other
+/// users pass, and a probe process confined as a test fails to read every `p.unreadable`, to write every `p.unwritable`, to open an AF_INET socket and
+/// to signal the grader. Else the first guarantee that does not hold, as one line.
+std::string containerProblem(const Protected& p);
+
+/// Sets the confinement `wanted`: "auto" (bubblewrap where it works, else container mode),
+/// "bubblewrap" or "container" (container mode is probed first, containerProblem). Returns "" when
+/// it holds here, else why not (one line; the confinement is then `none`).
+std::string chooseConfinement(const std::string& wanted, const Protected& p);
+
+/// The probe's main(): `clothlab-grade --container-probe [r FILE | w PATH]...` prints one line per
+/// guarantee that does not hold and exits 1 if there is one (run only by containerProblem).
+int containerProbeMain(int argc, char** argv);
 
 /// Runs the program; never throws for the program's own failure (see RunOutcome).
 RunOutcome runSandboxed(const SandboxRun& run);
 
-/// Makes a folder the sandboxed user may write (owned by nobody when the grader is root).
+/// Makes a folder the confined user may write: owned by nobody when bubblewrap runs as root (container
+/// mode hands it to each run's user while that run lasts).
 void makeWritableForSandbox(const fs::path& dir);
 
 }  // namespace grade
