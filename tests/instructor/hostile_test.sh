@@ -15,6 +15,7 @@ root=$1 grader=$2 kit=$3 mode=$4 only=${5:-.} stages=${6:-}
 grade_only=(); for s in ${stages//,/ }; do grade_only+=(--only "$s"); done
 hostile=$root/tests/instructor/hostile
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+chmod 711 "$tmp"  # container mode: a run's user passes through to its work folder (bubblewrap mounts it)
 # What the reference lost, from its feedback files: the message of each test that did not pass.
 reference_losses() {
   for f in "$tmp"/out*/feedback/reference.json; do
