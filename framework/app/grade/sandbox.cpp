@@ -352,6 +352,18 @@ const struct sock_fprog* containerFilter() {
     return &prog;
 }
 
+/// Runs a probe under confinement `c` (whichever the grader's is), with a log of its own: its outcome and log.
+std::pair<RunOutcome, std::string> runProbe(SandboxRun probe, Confinement c, const std::string& name) {
+    probe.log = fs::temp_directory_path() / ("clothlab-" + name + "-" + std::to_string(::getpid()) + ".log");
+    const Confinement was = g_confinement;
+    g_confinement = c;
+    const RunOutcome r = runSandboxed(probe);
+    g_confinement = was;
+    std::string log = readFile(probe.log, 1u << 20);
+    fs::remove(probe.log);
+    return {r, log};
+}
+
 /// Writes a line to stderr from a child after fork() (async-signal-safe), then ends it with 126.
 [[noreturn]] void childFails(const char* step) {
     const char* what = "clothlab-grade: cannot confine the program: ";
@@ -385,13 +397,7 @@ std::string bubblewrapProblem() {
         SandboxRun probe;
         probe.argv = {"/usr/bin/true"};
         probe.timeout_seconds = 20;
-        probe.log = fs::temp_directory_path() / ("clothlab-sandbox-probe-" + std::to_string(::getpid()) + ".log");
-        const Confinement was = g_confinement;
-        g_confinement = Confinement::bubblewrap;
-        const RunOutcome r = runSandboxed(probe);
-        g_confinement = was;
-        std::string log = readFile(probe.log, 2000);
-        fs::remove(probe.log);
+        const auto [r, log] = runProbe(probe, Confinement::bubblewrap, "sandbox-probe");
         if (r.exit_code == 0) return std::string();
         if (r.exit_code == 127) return std::string("bwrap is not installed (Debian package bubblewrap; ./lab setup installs it)");
         return "bwrap cannot create a sandbox here (exit " + std::to_string(r.exit_code) + "): " + firstLines(log, 1, "");
@@ -455,13 +461,7 @@ std::string containerProblem(const Protected& p) {
     for (const auto& f : p.unwritable) probe.argv.insert(probe.argv.end(), {"w", f.string()});
     probe.mounts = {{self, self, false}};
     probe.timeout_seconds = 30;
-    probe.log = fs::temp_directory_path() / ("clothlab-container-probe-" + std::to_string(::getpid()) + ".log");
-    const Confinement was = g_confinement;
-    g_confinement = Confinement::container;
-    const RunOutcome r = runSandboxed(probe);
-    g_confinement = was;
-    const std::string log = readFile(probe.log, 1u << 20);
-    fs::remove(probe.log);
+    const auto [r, log] = runProbe(probe, Confinement::container, "container-probe");
     if (r.exit_code == 0 && log.find("probe: every guarantee holds") != std::string::npos) return "";
     const size_t hole = log.find("hole: ");
     if (hole == std::string::npos)
