@@ -7,8 +7,9 @@
 //  1. windows of N consecutive tokens (default 16) of any function body in SOURCE_ROOT/solutions/**/*.cpp
 //     (the top-level functions, inside the namespace): a body copied, reformatted or renamed;
 //  2. every statement of those bodies (the tokens up to `;`, `{` or `}`) of at least 5 tokens that
-//     names two or more things: the reference's key lines, also one at a time (a shell script that
-//     quotes `1.0 - std::pow(1.0 - k, 1.0 / iterations)`);
+//     names two or more things and computes (two arithmetic operators or vector or math functions):
+//     the reference's key lines, also one at a time (a shell script that quotes
+//     `1.0 - std::pow(1.0 - k, 1.0 / iterations)`);
 //  3. the instructor's keys, FILE lines `SOURCE<TAB>SCOPE<TAB>KIND<TAB>TEXT` (SCOPE: a path prefix in
 //     STUDENTS_DIR the key applies to, `*` for all; KIND `tokens`: TEXT's C++ tokens in a row, e.g. a
 //     formula or a number; KIND `words`: any 6 consecutive words of TEXT with 3 or more that are not
@@ -175,6 +176,19 @@ bool namesEnough(const std::vector<Token>& t, size_t at, size_t n, size_t at_lea
         if (s.size() >= 2 && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_') && !keywords.count(s)) names.insert(s);
     }
     return names.size() >= at_least;
+}
+
+/// A statement is a key line of the answer if it computes something: two or more arithmetic operators
+/// or calls of a vector or math function (declarations, loop headers, `push_back({`, `len = e.norm()`
+/// and `return e / len` are in every numerical code).
+bool computes(const std::vector<Token>& t, size_t at, size_t n) {
+    static const std::set<std::string> ops = {"+", "-", "*", "/", "%", "+=", "-=", "*=", "/=", "^"};
+    static const std::set<std::string> math = {"dot", "cross", "norm", "squaredNorm", "normalized", "sqrt", "pow", "atan2",
+                                               "acos", "asin", "sin", "cos", "floor", "ceil", "clamp", "min", "max", "abs"};
+    int operations = 0;
+    for (size_t k = at; k < at + n; ++k)
+        operations += ops.count(t[k].text) || (math.count(t[k].text) && k + 1 < at + n && t[k + 1].text == "(") ? 1 : 0;
+    return operations >= 2;
 }
 
 std::string windowKey(const std::vector<Token>& t, size_t at, size_t n) {
@@ -375,7 +389,7 @@ int main(int argc, char** argv) {
             const bool end = k == b.tokens.size() || b.tokens[k].text == ";" || b.tokens[k].text == "{" || b.tokens[k].text == "}";
             if (!end) continue;
             const size_t n = std::min(k + 1, b.tokens.size()) - from;  // with its `;`
-            if (n >= 5 && namesEnough(b.tokens, from, n, 2) && stub_text.find("\x1f" + windowKey(b.tokens, from, n)) == std::string::npos &&
+            if (n >= 5 && namesEnough(b.tokens, from, n, 2) && computes(b.tokens, from, n) && stub_text.find("\x1f" + windowKey(b.tokens, from, n)) == std::string::npos &&
                 seen.insert(windowKey(b.tokens, from, n)).second) {
                 Needle st{{}, "", "", false};
                 for (size_t j = from; j < from + n; ++j) st.items.push_back(b.tokens[j].text);
