@@ -25,6 +25,11 @@ fail() { echo "FAIL: $*"; exit 1; }
 # ---- what students get
 students=$tmp/students
 "$root/lab" release "$students" --no-reference-objects >"$tmp/release.log" 2>&1 || { cat "$tmp/release.log"; fail "./lab release"; }
+# Level 3 of each hint is the formula, the free help the course gives on request (./lab hint N.M 3):
+# searched are levels 1 and 2 (what the sheet's "stuck?" leads to first).
+for f in "$students"/exercises/[0-9][0-9]_*/hints.json; do
+  jq 'map_values(.[0:2])' "$f" >"$f.12" && mv "$f.12" "$f" || fail "$f: (JSON): cannot read the hints"
+done
 for lang in en de; do
   mkdir -p "$students/handout/$lang"
   for md in "$root"/slides/[0-9][0-9]_*.md; do
@@ -36,15 +41,17 @@ done
 # ---- the instructor's keys: SOURCE<TAB>SCOPE<TAB>KIND<TAB>TEXT (clothlab-leak-check --keys)
 keys=$tmp/keys.tsv
 : >"$keys"
-# notation keys: anywhere
+# notation keys: in the sheets, stubs, hints and templates (elsewhere some are the seed's own formulas,
+# e.g. line (13) of the algorithm, v = (p - x) / dt, which the graded tests may use)
 grep -vE '^(#|$)' "$root/tests/instructor/keys/notation.txt" \
-  | awk '{ st = $1; sub(/^[^ ]+ /, ""); printf "tests/instructor/keys/notation.txt (stage %s)\t*\ttokens\t%s\n", st, $0 }' >>"$keys"
-# the answers of the speaker notes: each **Answers:** / **Antworten:** paragraph, one line
+  | awk '{ st = $1; sub(/^[^ ]+ /, ""); printf "tests/instructor/keys/notation.txt (stage %s)\texercises/\ttokens\t%s\n", st, $0 }' >>"$keys"
+# the answers of the speaker notes: each **Answers:** / **Antworten:** paragraph, one line, its prose
+# (formulas in $...$ are the decks' own notation, which the projected slides share)
 for md in "$root"/slides/[0-9][0-9]_*.md; do
   awk -v src="slides/$(basename "$md") (notes)" '
     /^\*\*(Answers|Antworten):\*\*/ { p = 1; t = "" }
     p && /^(:::|$)/ { printf "%s\t*\twords\t%s\n", src, t; p = 0 }
-    p { sub(/^\*\*(Answers|Antworten):\*\* */, ""); t = t " " $0 }
+    p { sub(/^\*\*(Answers|Antworten):\*\* */, ""); gsub(/\$[^$]*\$/, " "); t = t " " $0 }
     END { if (p) printf "%s\t*\twords\t%s\n", src, t }' "$md" >>"$keys"
 done
 # the instructor's docs: each paragraph or list item, one line
