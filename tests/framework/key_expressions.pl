@@ -42,7 +42,7 @@ if (defined $allow) {  # the allowed formulas, spacing-tolerant
     push @allowed, join "\\s*", map { quotemeta } split //, $p;
   }
 }
-open(my $k, "<", $keys) or die "$keys: $!"; my @keys = map { [split /\t/, $_, 2] } split /\n/, <$k>;
+open(my $k, "<", $keys) or die "$keys: $!"; my @keys = map { [split /\t/, $_, 2] } grep { !/^#/ && /\t/ } split /\n/, <$k>;  # comments and blank lines skipped
 my $bad = 0;
 for my $item (@items) {
   my ($lab, $path) = @$item;

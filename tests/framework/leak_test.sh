@@ -150,4 +150,17 @@ body=$(awk '/^[A-Za-z].*projectDistanceConstraint\(/ { p = 1 } p { print } p && 
 [[ -n $body ]] || fail "no projectDistanceConstraint in solutions/04_*/ (update this test)"
 fresh; mkdir -p "$tmp/p/notes" && printf 'auto corr = [&] {\n%s\n};\n' "$(sed 's|//.*||' <<<"$body" | tr -s ' \n' ' ')" >"$tmp/p/notes/mine.txt"
 plant "a reference body in a new file" '^leak: notes/mine\.txt:[0-9]+: (statement of|[0-9]+ windows of [0-9]+ tokens from) the reference'
+# Bad input to the search: one error line naming what is wrong, exit 2.
+bad_input() {  # bad_input PATTERN ARGS...
+  local pattern=$1 code; shift
+  "$check" "$@" >"$tmp/out" 2>&1; code=$?
+  [[ $code -eq 2 && $(grep -c '^error: ' "$tmp/out") -eq 1 ]] && grep -qE -- "$pattern" "$tmp/out" \
+    || fail "clothlab-leak-check $*: exit $code (want 2 and one error line matching $pattern): $(cat "$tmp/out")"
+}
+bad_input "^error: command line: $tmp/nope: \(folder\)" "$root" "$tmp/nope"
+bad_input '^error: command line: --window' "$root" "$students" --window x
+printf 'only one field\n' >"$tmp/bad_keys"
+bad_input "^error: command line: $tmp/bad_keys:1: expects SOURCE<TAB>SCOPE<TAB>KIND<TAB>TEXT" "$root" "$students" --keys "$tmp/bad_keys"
+printf 'src\t*\tregex\tx\n' >"$tmp/bad_keys"
+bad_input "^error: command line: $tmp/bad_keys:1: KIND must be tokens or words" "$root" "$students" --keys "$tmp/bad_keys"
 echo "what students get gives nothing away: ${summary#ok: }; the derivation keys in none of its files; $planted planted leaks found"
