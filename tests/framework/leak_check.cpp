@@ -53,7 +53,9 @@ bool twoCharOperator(char a, char b) {
 
 /// C++ tokens of `text` without comments, whitespace and preprocessor lines. Also used on Markdown,
 /// so a quote that does not close on its line is punctuation ("don't"), not the start of a literal.
-std::vector<Token> tokenize(const std::string& text) {
+/// With `literals` false every quote is punctuation and what it encloses is tokens too (for the
+/// statements and keys: code quoted in a shell script or a message).
+std::vector<Token> tokenize(const std::string& text, bool literals = true) {
     std::vector<Token> out;
     const size_t n = text.size();
     int line = 1;
@@ -79,7 +81,7 @@ std::vector<Token> tokenize(const std::string& text) {
             i = stop;
             continue;
         }
-        if (c == '"' || c == '\'') {  // a literal is one token, if it closes on this line
+        if (literals && (c == '"' || c == '\'')) {  // a literal is one token, if it closes on this line
             size_t j = i + 1;
             while (j < n && text[j] != c && text[j] != '\n') j += (text[j] == '\\' && j + 1 < n) ? 2 : 1;
             if (j < n && text[j] == c) {
@@ -282,7 +284,7 @@ void readKeys(const fs::path& file, std::vector<Needle>& needles) {
         const std::string text = line.substr(at), what = "key of " + f[0], scope = f[1] == "*" ? "" : f[1];
         if (f[2] == "tokens") {
             Needle k{{}, what + ": `" + text + "`", scope, false};
-            for (const auto& t : tokenize(text)) k.items.push_back(t.text);
+            for (const auto& t : tokenize(text, false)) k.items.push_back(t.text);
             if (!k.items.empty()) needles.push_back(std::move(k));
         } else if (f[2] == "words") {
             std::vector<std::string> w;
@@ -315,17 +317,17 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
 int findNeedles(const std::vector<Token>& seq, const std::vector<const Needle*>& needles, const std::string& rel) {
     std::unordered_map<std::string, std::vector<const Needle*>> by_first;
     for (const Needle* k : needles) by_first[k->items[0]].push_back(k);
-    std::set<const Needle*> found;
+    std::set<std::string> found;  // what was reported (the windows of one answer say it once)
     int leaks = 0;
     for (size_t at = 0; at < seq.size(); ++at) {
         const auto it = by_first.find(seq[at].text);
         if (it == by_first.end()) continue;
         for (const Needle* k : it->second) {
-            if (found.count(k) || at + k->items.size() > seq.size()) continue;
+            if (found.count(k->what) || at + k->items.size() > seq.size()) continue;
             bool same = true;
             for (size_t j = 1; j < k->items.size() && same; ++j) same = seq[at + j].text == k->items[j];
             if (!same) continue;
-            found.insert(k);
+            found.insert(k->what);
             ++leaks;
             std::cout << "leak: " << rel << ":" << seq[at].line << ": " << k->what << "\n";
         }
@@ -365,7 +367,8 @@ int main(int argc, char** argv) {
     for (const auto& f : filesUnder(root / "exercises", {".cpp", ".h"})) {
         const auto t = tokenize(readFile(f));
         for (size_t k = 0; k + window <= t.size(); ++k) stub_windows.insert(windowKey(t, k, window));
-        stub_text += windowKey(t, 0, t.size());
+        const auto plain = tokenize(readFile(f), false);
+        stub_text += windowKey(plain, 0, plain.size());
     }
     // Every other window of a reference body, and which function it comes from.
     std::unordered_map<std::string, const Body*> reference;
@@ -380,10 +383,13 @@ int main(int argc, char** argv) {
         }
     if (reference.empty()) usage(root.string() + "/solutions: no function body of " + std::to_string(window) + " tokens or more");
 
-    // The statements of the bodies (2.) and the instructor's keys (3.).
+    // The statements of the bodies (2.) and the instructor's keys (3.), as tokens with quotes as punctuation.
+    std::vector<Body> plain_bodies;
+    for (const auto& f : solution_files)
+        for (auto& b : functionBodies(tokenize(readFile(f), false), fs::relative(f, root).string())) plain_bodies.push_back(std::move(b));
     std::vector<Needle> needles;
     std::set<std::string> seen;
-    for (const auto& b : bodies) {
+    for (const auto& b : plain_bodies) {
         size_t from = 0;
         for (size_t k = 0; k <= b.tokens.size(); ++k) {
             const bool end = k == b.tokens.size() || b.tokens[k].text == ";" || b.tokens[k].text == "{" || b.tokens[k].text == "}";
@@ -425,7 +431,7 @@ int main(int argc, char** argv) {
         std::vector<const Needle*> by_tokens, by_words;
         for (const auto& k : needles)
             if (k.scope.empty() || rel.rfind(k.scope, 0) == 0) (k.words ? by_words : by_tokens).push_back(&k);
-        leaks += findNeedles(t, by_tokens, rel);
+        leaks += findNeedles(tokenize(text, false), by_tokens, rel);
         if (!by_words.empty()) leaks += findNeedles(wordsOf(text), by_words, rel);
     }
     std::cout << (leaks ? "FAIL" : "ok") << ": " << bodies.size() << " reference function bodies (" << solution_files.size()
