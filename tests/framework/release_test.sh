@@ -2,8 +2,9 @@
 # ./lab release writes a student distribution that builds, runs and grades on its own:
 # no solutions/, no instructor tests, every graded test "not implemented", every scene stops
 # with "not implemented: exercise ..." instead of crashing. The copy holds exactly the committed files
-# (git ls-tree HEAD) minus solutions/ and tests/instructor/, and gives away no reference function body
+# (git ls-tree HEAD) that tools/student_copy.txt lists, and gives away no reference function body
 # (clothlab-leak-check, the last step).
+# The copy holds exactly what tools/student_copy.txt lists (what release.leak_test searches for answers).
 # The copy carries the reference of every stage as compiled objects only (framework/reference/, made
 # by the instructor's build BUILD_DIR, stripped): the test finishes stages 01-04 as a student would,
 # runs pbd_sphere with `./lab build --reference 05,06`, edits a stage and sees `./lab run` run the edit;
@@ -20,21 +21,25 @@ fail() { echo "FAIL: $*"; exit 1; }
 CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/copy" >"$tmp/release.log" 2>&1 || { cat "$tmp/release.log"; fail "lab release"; }
 grep -q "reference objects" "$tmp/release.log" || fail "lab release does not report the reference objects: $(tail -2 "$tmp/release.log")"
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
-[[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
+for d in solutions tests/instructor docs/instructor slides tests/framework; do
+  [[ ! -e $tmp/copy/$d ]] || fail "the copy contains $d/ (instructor only)"
+done
 # The experiments' numbers are graded by the instructor: the copy's points files keep only the check
 # that the answers file is complete.
 for f in "$tmp"/copy/tests/[0-9][0-9]_*.points.json; do
   jq -e '(.tests | keys | map(select(startswith("Experiments."))) == ["Experiments.AnswerFileIsComplete"])' "$f" >/dev/null \
     || fail "$f in the copy: Experiments entries other than AnswerFileIsComplete: $(jq -c '.tests | keys | map(select(startswith("Experiments.")))' "$f")"
 done
-# Exactly the committed files: nothing untracked, no build output.
-{ git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/grade.yml
+# Exactly the committed files tools/student_copy.txt lists (README.student.md as README.md): nothing
+# untracked, no build output, nothing the list leaves out.
+mapfile -t keep < <(git -C "$root" show HEAD:tools/student_copy.txt | sed 's/#.*//; s/[[:space:]]*$//' | grep .)
+{ git -C "$root" archive --format=tar HEAD -- "${keep[@]}" | tar -t | grep -v '/$' | sed 's|^README\.student\.md$|README.md|'; echo .github/workflows/grade.yml
   git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'
   echo framework/reference/compiler.txt
   (cd "$tmp/copy" && find framework/reference -name '*.o' 2>/dev/null); } | sort >"$tmp/want.txt"
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
-  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the CI workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+  || fail "the copy is not what tools/student_copy.txt lists of git ls-tree HEAD, plus the CI workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
 # The reference objects: every stage of solutions/ has some, no source beside them, no debug information
 # (source paths, lines), no path into solutions/ (a Debug build's assert messages would quote code).
 for d in "$root"/solutions/[0-9][0-9]_*/; do
