@@ -40,6 +40,16 @@ mapfile -t keep < <(git -C "$root" show HEAD:tools/student_copy.txt | sed 's/#.*
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
   || fail "the copy is not what tools/student_copy.txt lists of git ls-tree HEAD, plus the CI workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+# Every Markdown link in the copy leads to a file in the copy (not to a doc the list leaves out).
+dead=""
+while IFS= read -r -d '' md; do
+  while IFS= read -r ref; do
+    path=${ref%%#*}
+    [[ -z $path || $path == http* || $path == mailto:* ]] && continue
+    [[ -e $(dirname "$md")/$path ]] || dead+="${md#$tmp/copy/} -> $ref; "
+  done < <(grep -oE '\]\([^)[:space:]]+\)' "$md" | sed -E 's/^\]\((.*)\)$/\1/')
+done < <(find "$tmp/copy" -name '*.md' -print0)
+[[ -z $dead ]] || fail "links in the copy to files it does not hold (tools/student_copy.txt leaves them out): $dead"
 # The reference objects: every stage of solutions/ has some, no source beside them, no debug information
 # (source paths, lines), no path into solutions/ (a Debug build's assert messages would quote code).
 for d in "$root"/solutions/[0-9][0-9]_*/; do
