@@ -73,6 +73,11 @@ grep -q "no reference for stage 05,06" "$tmp/bare-build.log" && grep -q -- "--no
 [[ ! -e $tmp/bare-build ]] || fail "--reference in a copy without reference objects configured a build before saying no"
 rm -rf "$tmp/bare"
 [[ -f $tmp/copy/.devcontainer/Dockerfile && -f $tmp/copy/.devcontainer/devcontainer.json ]] || fail "the copy lacks the dev container (.devcontainer/)"
+# A build folder outside the copy, configured for another tree: one line naming both, before any work.
+mkdir -p "$tmp/other-build" && printf 'CMAKE_HOME_DIRECTORY:INTERNAL=%s\n' "$root" >"$tmp/other-build/CMakeCache.txt"
+(cd "$tmp/copy" && CLOTHLAB_BUILD=$tmp/other-build ./lab build) >"$tmp/other.log" 2>&1 && fail "./lab build with a build folder made for another tree succeeds"
+grep -q "^error: $tmp/other-build: (build folder): configured for $root, not for this tree" "$tmp/other.log" \
+  || fail "./lab build with a build folder made for another tree: $(cat "$tmp/other.log")"
 if [[ $mode == fast ]]; then
   # Without building it: the copy configures on its own (CMake finds every file it names) and takes
   # its reference objects (made by this machine's compiler) without a warning.
@@ -93,6 +98,11 @@ export CLOTHLAB_BUILD_TYPE=Debug
 ./lab grade --json "$tmp/grade.json" >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the copy"; }
 grep -q '"max_points": [1-9]' "$tmp/grade.json" || fail "grade.json has no points"
 grep -q "graded by the instructor" "$tmp/grade.log" || fail "./lab grade in the copy does not say that the experiments' numbers are graded by the instructor"
+# ... and how many points that is per stage: the points the copy's points files record as graded apart.
+want=$(for f in tests/[0-9][0-9]_*.points.json; do n=$(basename "$f"); printf ', %s: %s' "${n:0:2}" "$(jq '.graded_apart.experiments // 0' "$f")"; done)
+grep -qF "the experiments' numbers (points per stage ${want:2})" "$tmp/grade.log" && grep -q "each stage's write-up" "$tmp/grade.log" \
+  || fail "./lab grade in the copy does not name the points it leaves out (${want:2}): $(grep -A1 'Not counted' "$tmp/grade.log")"
+[[ $(jq '[.graded_apart.experiments // 0] | add' tests/04_*.points.json) -gt 0 ]] || fail "tests/04_*.points.json in the copy records no experiment points graded apart"
 grep -q '"passed": true' "$tmp/grade.json" && fail "the untouched copy passes a graded test: $(grep -B3 '"passed": true' "$tmp/grade.json" | head -4)"
 # The copy's own graded binaries (its stubs): every test fails with "not implemented", through the grader.
 targets=(clothlab)
@@ -166,6 +176,17 @@ cp "$tmp/compiler.txt" framework/reference/compiler.txt
 tr -s ' \n' ' ' <"$tmp/other.log" | grep -q "compiled by GNU 0.0.1 .* they are not used" && grep -q "stage 05 (05_bending) uses stage_05_exercises" "$tmp/other.log" \
   || fail "reference objects of another compiler: no warning or not ignored: $(grep -A3 Warning "$tmp/other.log" | head -8)"
 rm -rf "$tmp/other"
+# A copy moved with its own build/ inside (cp -a): the next command builds again in the new folder and
+# writes nothing into the old one (here the old one is only named in the copied build's cache).
+mkdir -p "$tmp/moved" && cp -a "$tmp/copy/." "$tmp/moved/" && mkdir -p "$tmp/moved/build"
+printf 'CMAKE_HOME_DIRECTORY:INTERNAL=%s\n' "$tmp/gone" >"$tmp/moved/build/CMakeCache.txt"
+touch "$tmp/moved/build/old-marker"
+(cd "$tmp/moved" && env -u CLOTHLAB_BUILD CLOTHLAB_BUILD_TYPE=Debug ./lab build) >"$tmp/moved.log" 2>&1 || { tail -5 "$tmp/moved.log"; fail "./lab build in a moved copy"; }
+grep -q "note: .*build was built for $tmp/gone (this folder was moved or copied); building it again here" "$tmp/moved.log" \
+  && [[ ! -e $tmp/moved/build/old-marker && $(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$tmp/moved/build/CMakeCache.txt") == "$tmp/moved" ]] \
+  || fail "a moved copy's build is not made again in its new folder: $(head -3 "$tmp/moved.log")"
+[[ ! -e $tmp/gone ]] || fail "the moved copy's build wrote into its old folder"
+rm -rf "$tmp/moved"
 # Last, so that the checks above run even while a known leak waits to be removed.
 "$leak_check" "$root" "$tmp/copy" || fail "the copy gives away reference code (lines above)"
 echo "release copy builds, grades (0 points) and runs every scene up to 'not implemented'; with stages 01-04 done and the reference objects for 05-06 pbd_sphere runs, and an edit runs at once; no untracked file, no leak"
