@@ -555,7 +555,7 @@ TEST(Task1_4_SymplecticEuler, ConservesMomentumAndAngularMomentumWithRandomMasse
 }
 
 TEST(Task1_5_VelocityVerlet, ConservesMomentumAndAngularMomentumWithRandomMasses) {
-    // Each half kick and the drift keep sum x_i x m_i v_i for central forces.
+    // For central forces every update of velocity Verlet keeps sum x_i x m_i v_i (the contract in the header).
     forEachSeed([](unsigned seed) { return conservesMomenta(&velocityVerletStep, "Velocity Verlet", seed, true); });
 }
 

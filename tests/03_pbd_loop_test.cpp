@@ -60,16 +60,6 @@ PbdCallbacks gravityOnly(const VectorX& w) {
     return cb;
 }
 
-// A distance constraint between particles a and b written here, mass-weighted.
-void projectLink(Matrix3X& p, const VectorX& w, int a, int b, double d) {
-    const Vec3 e = p.col(a) - p.col(b);
-    const double len = e.norm(), ws = w[a] + w[b];
-    if (len < 1e-12 || ws <= 0) return;
-    const Vec3 corr = (len - d) / (ws * len) * e;
-    p.col(a) -= w[a] * corr;
-    p.col(b) += w[b] * corr;
-}
-
 }  // namespace
 
 // ---- Task 3.1 ------------------------------------------------------------------------------------
@@ -163,10 +153,12 @@ TEST(Task3_2_IterationStiffness, GivesTheSameTotalEffectForAnyIterationCount) {
     for (double k : {0.1, 0.5, 0.9})
         for (int n : {1, 2, 10, 100}) {
             const double kp = iterationStiffness(k, n);
-            EXPECT_CLOSE(std::pow(1.0 - kp, n), 1.0 - k, 1e-12)
-                << "the error left after n = " << n << " projections with k' = iterationStiffness(" << k << ", " << n
-                << ") = " << kp << ": n iterations together must act like one projection with k = " << k
-                << ", leaving the fraction 1 - k";
+            double left = 1.0;  // the fraction of an error C still there: each projection takes k' of it
+            for (int i = 0; i < n; ++i) left -= kp * left;
+            EXPECT_CLOSE(left, 1.0 - k, 1e-12)
+                << "the fraction of an error C left after n = " << n << " projections with k' = iterationStiffness(" << k
+                << ", " << n << ") = " << kp << ", each removing the fraction k' of what is left: n iterations together "
+                << "must act like one projection with k = " << k << ", which leaves 1 - k";
         }
     EXPECT_SAME_DOUBLE(iterationStiffness(0.3, 1), 0.3) << "the per-iteration stiffness for k = 0.3 and 1 iteration: one "
                                                            "projection must do the whole job, so it must be k itself";
@@ -214,8 +206,8 @@ TEST(Task3_3_PbdStep, PinnedParticlesNeverMove) {
     cb.projectConstraints = [w](Matrix3X& p) {
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) {
-                if (c + 1 < 3) projectLink(p, w, r * 3 + c, r * 3 + c + 1, 0.5);
-                if (r + 1 < 3) projectLink(p, w, r * 3 + c, (r + 1) * 3 + c, 0.5);
+                if (c + 1 < 3) testing_util::projectRod(p, w, r * 3 + c, r * 3 + c + 1, 0.5);
+                if (r + 1 < 3) testing_util::projectRod(p, w, r * 3 + c, (r + 1) * 3 + c, 0.5);
             }
     };
     for (int s = 0; s < 200; ++s) pbdStep(P, cb, 0.1, 10, 0.01);
@@ -349,8 +341,8 @@ TEST(Task3_3_PbdStep, SwingingChainKeepsItsLinks) {
     PbdCallbacks cb = gravityOnly(P.w);
     const VectorX w = P.w;
     cb.projectConstraints = [w](Matrix3X& p) {
-        projectLink(p, w, 0, 1, 0.5);
-        projectLink(p, w, 1, 2, 0.5);
+        testing_util::projectRod(p, w, 0, 1, 0.5);
+        testing_util::projectRod(p, w, 1, 2, 0.5);
     };
     double lowest = 0.0, highest = -1.0;
     for (int s = 0; s < 200; ++s) {
@@ -468,8 +460,8 @@ TEST(Task3_1_DampVelocities, NearlyStraightClothKeepsItsSpinAndMomenta) {
 }
 
 TEST(Task3_3_PbdStep, UnevenForcesRandomMassesAndOrientations) {
-    // One PBD step with a different external force on every particle and links written here (which conserve
-    // momentum): the momentum of the free particles changes by exactly dt times the total force on them
+    // One PBD step with a different external force on every particle and a constraint written here (which
+    // conserves momentum): the momentum of the free particles changes by exactly dt times the total force on them
     // (Newton's second law), pinned particles stay put whatever force acts on them, and rotating the whole
     // set-up rotates the result.
     forEachSeed([](unsigned seed) -> testing::AssertionResult {
@@ -489,10 +481,7 @@ TEST(Task3_3_PbdStep, UnevenForcesRandomMassesAndOrientations) {
             const Matrix3X f = Q * fext;
             PbdCallbacks cb;
             cb.externalForces = [f](const Matrix3X&, const Matrix3X&, Matrix3X& out) { out += f; };
-            cb.projectConstraints = [w, s](Matrix3X& p) {
-                for (int i = 0; i + 1 < 9; ++i)
-                    if (i != 3 && i != 4) projectLink(p, w, i, i + 1, 0.5 * s);  // links among free particles only
-            };
+            cb.projectConstraints = [w](Matrix3X& p) { testing_util::pullTowardsCentreOfMass(p, w, 0.3); };
             pbdStep(Pq, cb, 0.0, 3, dt);
             return Pq;
         };

@@ -285,16 +285,10 @@ TEST(Task6_4_CollisionSteps, ClothRestingOnAPlaneDoesNotJitter) {
     P.w = VectorX::Constant(16, 16.0);
     const Matrix3X x0 = P.x;
     const Extra links = [](Matrix3X& p, const VectorX& w) {
-        auto link = [&](int a, int b) {
-            const Vec3 e = p.col(a) - p.col(b);
-            const double len = e.norm();
-            const Vec3 corr = (len - 0.1) / ((w[a] + w[b]) * len) * e;
-            p.col(a) -= w[a] * corr, p.col(b) += w[b] * corr;
-        };
         for (int r = 0; r < 4; ++r)
             for (int c = 0; c < 4; ++c) {
-                if (c < 3) link(r * 4 + c, r * 4 + c + 1);
-                if (r < 3) link(r * 4 + c, r * 4 + c + 4);
+                if (c < 3) testing_util::projectRod(p, w, r * 4 + c, r * 4 + c + 1, 0.1);
+                if (r < 3) testing_util::projectRod(p, w, r * 4 + c, r * 4 + c + 4, 0.1);
             }
     };
     const std::vector<AnyCollider> cols = {plane(Vec3(0, 0, 0), Vec3(0, 1, 0), 0.5)};

@@ -117,6 +117,36 @@ inline testing::AssertionResult exactFormat(const char* ae, const char* be, doub
     return compareFormat(ae, be, a, b, [](double x, double y) { return x == y; }, "exactly");
 }
 
+/// A rod of rest length d (m) between particles a and b, for the tests of stages other than 04 that need
+/// constraints (the projection of a distance constraint is task 4.3, which these tests must not give
+/// away nor depend on): two free ends each take half of the error along the rod, a free end beside a
+/// pinned one (w = 0) all of it, two pinned ends none. Masses are otherwise ignored: it conserves
+/// momentum only for equal masses, so tests that check momentum use equal masses or
+/// pullTowardsCentreOfMass().
+inline void projectRod(Matrix3X& p, const VectorX& w, int a, int b, double d) {
+    const Vec3 e = p.col(a) - p.col(b);
+    const double len = e.norm();
+    if (len < 1e-12) return;
+    const double share_a = w[a] > 0 ? (w[b] > 0 ? 0.5 : 1.0) : 0.0, share_b = w[b] > 0 ? (w[a] > 0 ? 0.5 : 1.0) : 0.0;
+    const Vec3 error = (len - d) / len * e;
+    p.col(a) -= share_a * error;
+    p.col(b) += share_b * error;
+}
+
+/// A constraint that conserves momentum for any masses, and is no exercise: the free particles (w > 0)
+/// move the fraction `share` of the way towards their centre of mass c = Σ m_i p_i / Σ m_i, so
+/// Σ m_i Δp_i = share (Σ m_i c − Σ m_i p_i) = 0; pinned particles stay.
+inline void pullTowardsCentreOfMass(Matrix3X& p, const VectorX& w, double share) {
+    Vec3 c = Vec3::Zero();
+    double mass = 0;
+    for (Eigen::Index i = 0; i < p.cols(); ++i)
+        if (w[i] > 0) c += p.col(i) / w[i], mass += 1 / w[i];
+    if (mass <= 0) return;
+    c /= mass;
+    for (Eigen::Index i = 0; i < p.cols(); ++i)
+        if (w[i] > 0) p.col(i) += share * (c - p.col(i));
+}
+
 }  // namespace clothlab::testing_util
 
 /// EXPECT_DOUBLE_EQ with numbers as short as they can be (testing_util::sameDoubleFormat).

@@ -21,9 +21,15 @@ for variant in solutions exercises; do
   answers=$root/$variant/04_distance/answers.json
   "$grader" --points-dir "$root/tests" --stage "04=$exe" --answers "04=$answers" --json "$tmp/$variant.json" \
     --gradescope "$tmp/$variant.gs.json" --markdown "$tmp/$variant.md" --junit "$tmp/$variant.xml" >"$tmp/$variant.log" 2>&1
-  [[ $variant == exercises ]] || grep -qE "^04 .* $max\.0 / $max\.0 +\+ $bonus bonus$" "$tmp/$variant.log" \
-    || fail "the reference's table row is not '$max / $max + $bonus bonus': $(grep '^04' "$tmp/$variant.log")"
 done
+# The table counts the bonus tests apart from the stage's: "16 / 16 ... 27.0 / 27.0   + bonus 5 / 5 tests, 8 / 8 points".
+ntests=$(jq '.tests | length' "$pf")
+grep -qE "^04 .* $ntests / $ntests +$max\.0 / $max\.0 +\+ bonus $nbonus / $nbonus tests, $bonus / $bonus points$" "$tmp/solutions.log" \
+  || fail "the reference's table row is not '$ntests / $ntests  $max / $max  + bonus $nbonus / $nbonus tests, $bonus / $bonus points': $(grep '^04' "$tmp/solutions.log")"
+grep -qE "^04 .* 0 / $ntests +0\.0 / $max\.0 +\+ bonus 0 / $nbonus tests, 0 / $bonus points$" "$tmp/exercises.log" \
+  || fail "the stub's table row is not '0 / $ntests  0 / $max  + bonus 0 / $nbonus tests, 0 / $bonus points': $(grep '^04' "$tmp/exercises.log")"
+grep -qE "^total .* $max\.0 / $max\.0 +\+ bonus $bonus / $bonus points$" "$tmp/solutions.log" \
+  || fail "the reference's total row: $(grep '^total' "$tmp/solutions.log")"
 jq -e --argjson m "$max" --argjson b "$bonus" --argjson n "$nbonus" '.points == $m and .max_points == $m and .bonus == $b
      and .stages[0].bonus == $b and ([.stages[0].tests[] | select(.bonus)] | length) == $n' "$tmp/solutions.json" >/dev/null \
   || fail "the reference's JSON: points $max of $max and bonus $bonus expected: $(jq -c '{points, max_points, bonus}' "$tmp/solutions.json")"
@@ -35,6 +41,8 @@ jq -e --argjson m "$max" --argjson b "$bonus" --argjson n "$nbonus" '.score == $
   || fail "Gradescope: the bonus must be extra credit ($max + $bonus, bonus tests max_score 0): $(jq -c '{score, output}' "$tmp/solutions.gs.json")"
 grep -q "^| \*\*total\*\* | | | | \*\*$max / $max + $bonus bonus\*\* |" "$tmp/solutions.md" \
   || fail "the reference's Markdown total: $(grep total "$tmp/solutions.md")"
+grep -q "^| 04 | .* | graded | $ntests / $ntests + $nbonus / $nbonus bonus | $max / $max + $bonus bonus |" "$tmp/solutions.md" \
+  || fail "the reference's Markdown row does not count the bonus tests apart: $(grep '^| 04' "$tmp/solutions.md")"
 grep -q "failed, $nbonus bonus not earned</summary>" "$tmp/exercises.md" || fail "the stub's Markdown does not call the bonus tests not earned"
 grep -q "skipped=\"$nbonus\"" "$tmp/exercises.xml" && [[ $(grep -c '<skipped message="bonus not earned' "$tmp/exercises.xml") -eq $nbonus ]] \
   || fail "JUnit: the stub's bonus tests are not skipped"

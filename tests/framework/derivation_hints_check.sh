@@ -2,12 +2,12 @@
 # Derivation tasks state the principle, not the formula; hints nudge first. Checked on exercises/,
 # the lecture decks slides/*.md (both editions, speaker notes included) and docs/*.md:
 #   1. no task sheet (NN_*/README.md), stub (NN_*/*.cpp) or level-1/2 hint (NN_*/hints.json) contains a
-#      key expression of a derivation task's answer (list below: regexes, spacing-tolerant, matched
+#      key expression of a derivation task's answer (tests/instructor/keys/derivations.tsv: regexes, spacing-tolerant, matched
 #      after Unicode subscripts, superscripts, bold and the signs − · × are written plainly);
 #      only the level-3 hint may give the formula;
 #   2. no deck or doc contains one either (their LaTeX and Markdown written plainly first: \frac{a}{b}
 #      is a/(b), \vb{p}_1 is p1, \sum is Σ), except the original slides' own formulas: the allow-list
-#      below, each entry exactly as the decks set it (issue #26: "keep the slides' own formulas");
+#      tests/instructor/keys/derivations_allowed.tsv, each entry exactly as the decks set it;
 #   3. every level-1 hint is a question (ends with "?") that names a slide ("slide 22", "slides 17-21",
 #      "slide 'Title'").
 # The lists are live: each task's level-3 hint and the reference (solutions/, when present) contain one
@@ -20,52 +20,15 @@ export LC_ALL=C.UTF-8
 root=$1
 [[ -d $root/exercises ]] || { echo "error: $root/exercises: no such folder"; exit 2; }
 
-# TASK<TAB>REGEX (Perl). After normalising: "w₁" is "w1", "Δt²" is "Δt^2", "−" is "-", "·" is "*",
-# "×" is " x ", "**p**" is "p", whitespace is one space.
-KEYS=$(cat <<'EOF'
-1.5	(?i)kick[- ]drift[- ]kick|half[- ]kick
-1.5	v(_|\^)?\{?(half|n\s*\+\s*1/2)
-1.5	(dt|Δt)\s*/\s*2\s*\*?\s*(a|w)(?![a-z(])
-1.5	0\.5\s*\*\s*dt\s*\*\s*\(\s*f\s*\*\s*w\.asDiagonal
-3.2	\(\s*1\s*-\s*k\s*\)\s*(\^|\*\*)\s*\(?\s*1\s*/
-3.2	pow\s*\(\s*1(\.0)?\s*-\s*k\b
-3.2	(?i)\bn-?th\s+root|\^n\s*√
-4.3	w\w{0,3}\s*/\s*\(\s*w\w{0,3}\s*\+\s*w\w{0,3}\s*\)
-4.3	C\s*/\s*\(\s*w1\s*\+\s*w2\s*\)
-4.3	\bs\s*=\s*(k\s*\*?\s*)?C\s*/\s*\(?\s*(Σ|sum)
-4.3	λ_?\w?\s*=\s*-\s*s\s*\*?\s*w
-4.3	-\s*(k\s*\*?\s*)?s\s*\*?\s*w_?\w?\s*\*?\s*(∇|grad)
-4.3	k\s*\*\s*\(\s*len\s*-\s*d\s*\)\s*/\s*\(\s*wsum|\{\s*-\s*w1\s*\*\s*s\s*,\s*w2\s*\*\s*s\s*\}
-5.1	n_?2\s*x\s*p_?2\s*\+\s*\(?\s*p_?2\s*x\s*n_?1
-5.1	n_?1\s*x\s*p_?2\s*\+\s*\(?\s*p_?2\s*x\s*n_?2
-5.1	q_?2\s*=\s*\(?\s*p_?3\s*x\s*n_?2
-5.1	n2\.cross\(\s*p2\s*\)\s*\+\s*p2\.cross\(\s*n1\s*\)
-5.1	(?i)swap(ping)?\s+(the\s+order\s+of\s+)?(each|every)\s+cross\s+product
-5.2	sin\s*\(?\s*(φ|phi)\s*\)?[^/]{0,40}/\s*\(?\s*(Σ|sum)
-5.2	\+\s*(k\s*\*?\s*)?w_?i\s*\*?\s*sin
-5.2	k\s*\*\s*g\.sinPhi\s*\*\s*C\s*/\s*sumWq2
-6.2	\|\s*u\s*\|\s*\^2\s*\*?\s*t\s*\^2
-6.2	\|\s*f\s*\|\s*\^2\s*-\s*R_?h\s*\^2
-6.2	-\s*\(?\s*u\s*[.*]\s*f\s*\)?\s*-\s*(√|sqrt)|-\s*B\s*-\s*(std::)?sqrt|B\s*\*\s*B\s*-\s*A\s*\*\s*Cq
-6.2	\(\s*f\s*\+\s*t\s*\*?\s*u\s*\)\s*/
-6.3	(Δ|d)p\s*=\s*-\s*C\s*\*?\s*n|-\s*C\s*\*\s*c\.n\b
-6.4	max\s*\(\s*v_?n\s*,\s*-\s*(e|c\.restitution)
-6.4	min\s*\(\s*\|?\s*v_?tL?e?n?\s*\|?\s*,\s*(mu|μ|c\.friction)
-EOF
-)
-# The allow-list: the original slides' own formulas that match a key expression, allowed in slides/*.md
-# and docs/*.md only (never in a sheet, stub or level-1/2 hint). TASK<TAB>FORMULA, exactly as the decks
-# set it (cut after the same normalising, spacing-tolerant). Only what the original slides print:
-#   slide 22 'Distanz-Constraint', Projektion des Constraint: Δp1 and Δp2 for k = 1 (slides/07_distance.md);
-#   slide 23 'Biege-Constraint', [Müller07] appendix A: Δp_i with its printed sign (slides/08_bending.md).
-# Never allowed, the seed does not print them: k' = 1 - (1 - k)^(1/n) (3.2), the general s = C/Σ w|∇C|^2
-# and Δp_i = -k s w_i ∇C (4.3), the q-vectors with their sign fixed (5.1), Δp_i with its sign fixed (5.2).
-ALLOW=$(cat <<'EOF'
-4.3	\Delta\vb{p}_1 = -\frac{w_1}{w_1 + w_2}\,\bigl(|\vb{p}_1 - \vb{p}_2| - d\bigr)\,\frac{\vb{p}_1 - \vb{p}_2}{|\vb{p}_1 - \vb{p}_2|}
-4.3	\Delta\vb{p}_2 = +\frac{w_2}{w_1 + w_2}\,\bigl(|\vb{p}_1 - \vb{p}_2| - d\bigr)\,\frac{\vb{p}_1 - \vb{p}_2}{|\vb{p}_1 - \vb{p}_2|}
-5.2	\Delta\vb{p}_i = -\frac{w_i \sqrt{1 - d^2}\,\bigl(\arccos(d) - \varphi_0\bigr)}{\sum_j w_j |\vb{q}_j|^2}\,\vb{q}_i
-EOF
-)
+# The keys, instructor-only (the student copy has no tests/instructor/): TASK<TAB>REGEX (Perl), matched
+# after normalising: "w₁" is "w1", "Δt²" is "Δt^2", "−" is "-", "·" is "*", "×" is " x ", "**p**" is "p",
+# whitespace is one space; and the allow-list of the original slides' own formulas, TASK<TAB>FORMULA.
+keys_dir=$root/tests/instructor/keys
+for f in derivations.tsv derivations_allowed.tsv; do
+  [[ -f $keys_dir/$f ]] || { echo "error: $keys_dir/$f: no such file (the instructor's keys; this check runs in the instructor's tree)"; exit 2; }
+done
+KEYS=$(grep -vE '^(#|$)' "$keys_dir/derivations.tsv")
+ALLOW=$(grep -vE '^(#|$)' "$keys_dir/derivations_allowed.tsv")
 SLIDE="(?i)\bslides?\s+([0-9]|'|‘)"
 
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
@@ -77,51 +40,7 @@ hint_levels() { jq -r --argjson a "$2" --argjson b "$3" 'to_entries[] | .key as 
 # FILE, after normalising its text to the plain notation of the keys; status 1 if any. With ALLOWFILE
 # (decks, docs): LaTeX and Markdown are written plainly too, and the allowed formulas are cut first.
 gives_away() {
-  perl -CSD -Mutf8 -e '
-    my ($label, $file, $keys, $allow) = @ARGV;
-    my $br = qr/(\{(?:[^{}]++|(?-1))*+\})/;  # a balanced {...}
-    sub frac { my ($num, $den) = map { substr($_, 1, -1) } @_; $num =~ s/^\s+|\s+$//g;
-               ($num =~ /^[\w\\\x27.]+$/ ? $num : "($num)") . "/($den)" }
-    sub plain {  # TEXT, TEX: the text in the plain notation of the keys
-      my ($t, $tex) = @_;
-      if ($tex) {  # \frac{a}{b} -> a/(b), \vb{p}_1 -> p1, \sum -> Σ, ^{1/n} -> ^1/n, `code` -> code
-        1 while $t =~ s/\\[dt]?frac\s*$br\s*$br/frac($1, $2)/e;
-        my %sym = (Delta => "Δ", nabla => "∇", sum => "Σ", varphi => "φ", phi => "φ", lambda => "λ",
-                   alpha => "α", sqrt => "√", cdot => "·", times => "×", sin => "sin", arccos => "arccos");
-        $t =~ s/\\(Delta|nabla|sum|varphi|phi|lambda|alpha|sqrt|cdot|times|sin|arccos)(?![a-zA-Z])/$sym{$1}/g;
-        $t =~ s/\\(?:vb|mathbf|boldsymbol|bm|vec|hat|tilde|bar|mathrm|text|textbf|operatorname|left|right|[bB]igg?[lr]?)(?![a-zA-Z])//g;
-        $t =~ s/\\(?:q?quad(?![a-zA-Z])|[,;:! ])/ /g; $t =~ s/\\\|/|/g; $t =~ s/[{}\$`]//g;
-      }
-      $t =~ s/\*\*//g; $t =~ tr/₀₁₂₃₄₅₆₇₈₉ᵢⱼₕₛ/0123456789ijhs/; $t =~ s/²/^2/g; $t =~ s/ⁿ/^n/g; $t =~ s/½/1\/2/g;
-      $t =~ s/−/-/g; $t =~ s/·/*/g; $t =~ s/×/ x /g; $t =~ s/\s+/ /g;
-      $t =~ s/_(\w)/$1/g if $tex;
-      return $t;
-    }
-    local $/;
-    # LABEL "-" and FILE "@LIST": every "LABEL<TAB>FILE" line of LIST, in one perl (the framework sources)
-    my @items = $file =~ /^@(.*)/s ? do { open(my $l, "<", $1) or die "$1: $!"; map { [split /\t/] } split /\n/, <$l> }
-                                   : ([$label, $file]);
-    my @allowed;
-    if (defined $allow) {  # the allowed formulas, spacing-tolerant
-      open(my $al, "<", $allow) or die "$allow: $!";
-      for (split /\n/, <$al>) {
-        my (undef, $formula) = split /\t/, $_, 2; next unless length($formula // "");
-        (my $p = plain($formula, 1)) =~ s/\s+//g;
-        push @allowed, join "\\s*", map { quotemeta } split //, $p;
-      }
-    }
-    open(my $k, "<", $keys) or die "$keys: $!"; my @keys = map { [split /\t/, $_, 2] } split /\n/, <$k>;
-    my $bad = 0;
-    for my $item (@items) {
-      my ($lab, $path) = @$item;
-      open(my $f, "<", $path) or die "$path: $!"; my $t = plain(<$f>, defined $allow);
-      $t =~ s/$_/ [allowed] /g for @allowed;
-      for (@keys) {
-        my ($task, $re) = @$_;
-        if ($t =~ /$re/) { print "$lab: prints the answer of derivation task $task (\x27$&\x27, key /$re/)\n"; $bad = 1 }
-      }
-    }
-    exit $bad' "$1" "$2" "${3:-$work/keys}" ${4:+"$4"}
+  perl -CSD "$(dirname "${BASH_SOURCE[0]}")/key_expressions.pl" "$1" "$2" "${3:-$work/keys}" ${4:+"$4"}
 }
 
 # unchanged TREE FILE: TREE is a planted copy and FILE is as in the source tree (checked there already).
@@ -163,18 +82,18 @@ for task in $(cut -f1 <<<"$KEYS" | sort -u); do
   grep -F "$task	" "$work/keys" >"$work/task_keys"
   jq -r --arg t "$task" '.[$t][2] // empty' "$root"/exercises/"$nn"_*/hints.json >"$work/level3"
   gives_away x "$work/level3" "$work/task_keys" >/dev/null \
-    && { echo "FAIL: no key expression of task $task matches its level-3 hint (a stale list, or the formula left level 3)"; fail=1; }
+    && { echo "FAIL: no key expression of task $task matches its level-3 hint (a stale tests/instructor/keys/derivations.tsv, or the formula left level 3)"; fail=1; }
   if [[ -d $root/solutions ]]; then
     sed -E 's://.*$::' "$root"/solutions/"$nn"_*/*.cpp >"$work/reference"
     gives_away x "$work/reference" "$work/task_keys" >/dev/null \
-      && { echo "FAIL: no key expression of task $task matches the reference solutions/${nn}_*/ (update the list in $0)"; fail=1; }
+      && { echo "FAIL: no key expression of task $task matches the reference solutions/${nn}_*/ (update tests/instructor/keys/derivations.tsv)"; fail=1; }
   fi
 done
 # The allow-list is live: each entry is, as written, on a slide (else it is stale: update it with the deck).
 if [[ -d $root/slides ]]; then
   while IFS=$'\t' read -r task formula; do
     cat "$root"/slides/*.md | grep -qF -- "$formula" \
-      || { echo "FAIL: the allowed seed formula of task $task is in no deck as written (update the allow-list in $0): $formula"; fail=1; }
+      || { echo "FAIL: the allowed seed formula of task $task is in no deck as written (update tests/instructor/keys/derivations_allowed.tsv): $formula"; fail=1; }
   done <"$work/allow"
 fi
 check "$root" || { echo "FAIL: a sheet, stub, level-1/2 hint, deck or doc prints a derivation's answer, or a level-1 hint is no question naming a slide (lines above)"; exit 1; }

@@ -12,6 +12,7 @@
 # Then it proves it fails on a planted unknown command and a planted undocumented scene field.
 # Usage: docs_commands_check.sh SOURCE_DIR BUILD_DIR
 set -u
+shopt -s nullglob  # docs/instructor/ may hold no file yet
 root=$1 build=$2
 fail() { echo "FAIL: $*"; exit 1; }
 [[ -x $build/bin/clothlab ]] || fail "$build/bin/clothlab is not built"
@@ -37,7 +38,7 @@ check_commands() {
   [[ $layout == "$(grep -vx help <<<"$lab_cmds")" ]] || {
     echo "docs/design.md: the Layout's lab line lists [$(tr '\n' ' ' <<<"$layout")], the dispatcher runs [$(tr '\n' ' ' <<<"$lab_cmds")]"; bad=1; }
   local cl_cmds; cl_cmds=$(clothlab_listed)
-  for f in "$tree/README.md" "$tree"/docs/*.md "$tree"/exercises/*/README.md; do
+  for f in "$tree/README.md" "$tree/README.student.md" "$tree"/docs/*.md "$tree"/docs/instructor/*.md "$tree"/exercises/*/README.md; do
     while IFS= read -r line; do
       read -r cmd sub _ <<<"$line"
       case $cmd in
@@ -85,7 +86,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 (cd "$root" && git ls-files -z | xargs -0 cp --parents -t "$tmp/" 2>/dev/null) || cp -r "$root/." "$tmp/"
 rm -rf "$tmp/build" && ln -s "$(cd "$build" && pwd)" "$tmp/build"
 ran=0
-for f in "$tmp/README.md" "$tmp"/docs/*.md "$tmp"/exercises/*/README.md; do
+for f in "$tmp/README.md" "$tmp/README.student.md" "$tmp"/docs/*.md "$tmp"/docs/instructor/*.md "$tmp"/exercises/*/README.md; do
   while IFS= read -r raw; do
     line=${raw%% #*} want=0
     [[ $raw =~ \#.*exit\ ([0-9]+) ]] && want=${BASH_REMATCH[1]}

@@ -2,16 +2,16 @@
 # Every file the README and docs/*.md point to exists: markdown links [text](path) and paths in
 # backticks under the repository's top folders (framework/, tests/, scenes/, docs/, exercises/,
 # solutions/, cmake/, benchmarks/, slides/). Placeholders (NN, 0N, *, <...>, {a,b}) are skipped.
-# And the README stays under 12 KB, and its example grade of stage 01 counts the tests and points
-# that tests/01_hooke.points.json has in the student copy; docs/grading.md's stage totals are the
-# points files'.
+# And the README stays under 12 KB; the student copy's README (README.student.md) has the README's stage
+# table and an example grade of stage 01 that counts the tests and points tests/01_hooke.points.json has
+# in the student copy; docs/grading.md's stage totals are the points files'.
 # Usage: docs_links_check.sh SOURCE_DIR   (then proves it fails on a copy with a broken link planted)
 set -u
 root=$1
 
 check() {  # check TREE
   local tree=$1 bad=0 f dir ref path
-  for f in "$tree/README.md" "$tree"/docs/*.md "$tree"/exercises/*/README.md "$tree/slides/README.md"; do
+  for f in "$tree/README.md" "$tree/README.student.md" "$tree"/docs/*.md "$tree"/docs/instructor/*.md "$tree"/exercises/*/README.md "$tree/slides/README.md"; do
     [[ -f $f ]] || continue
     dir=$(dirname "$f")
     # markdown links, relative to the file
@@ -37,9 +37,13 @@ size=$(wc -c <"$root/README.md")
 # file passes through it unchanged).
 student=$(jq -c -f "$root/tools/student_points.jq" "$root/tests/01_hooke.points.json") || { echo "FAIL: tools/student_points.jq"; exit 1; }
 tests=$(jq '.tests | length' <<<"$student") points=$(jq '[.tests[]] | add' <<<"$student")
-row=$(grep -E '^ *01 +Hooke' "$root/README.md")
+row=$(grep -E '^ *01 +Hooke' "$root/README.student.md")
 [[ $row =~ [0-9]+\ /\ ([0-9]+)\ +[0-9.]+\ /\ ([0-9.]+) && ${BASH_REMATCH[1]} == "$tests" && ${BASH_REMATCH[2]} == "$points.0" ]] \
-  || { echo "FAIL: README.md's example grade of stage 01 ('$row') must show / $tests tests and / $points.0 points (tests/01_hooke.points.json as the student copy has it)"; exit 1; }
+  || { echo "FAIL: README.student.md's example grade of stage 01 ('$row') must show / $tests tests and / $points.0 points (tests/01_hooke.points.json as the student copy has it)"; exit 1; }
+# The stage table is in both READMEs (the student copy's README is README.student.md): the same rows.
+stage_rows() { grep -E '^\| \[0[1-9]\]\(exercises/' "$1"; }
+[[ -n $(stage_rows "$root/README.md") && $(stage_rows "$root/README.md") == "$(stage_rows "$root/README.student.md")" ]] \
+  || { echo "FAIL: the stage tables of README.md and README.student.md differ: $(diff <(stage_rows "$root/README.md") <(stage_rows "$root/README.student.md") | head -4 | tr '\n' ' ')"; exit 1; }
 # docs/grading.md's stage totals ("the stage totals are A–B (stage 01 has N task tests)") are the points files'.
 totals() {  # the sentence as the points files make it
   local lo hi n

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The student copy holds no experiment's key: no file that ./lab release ships (the tracked files but
-# solutions/ and tests/instructor/) contains a number the reference's answers.json enters (predictions
+# The student copy holds no experiment's key: no file that ./lab release ships (the committed files
+# tools/student_copy.txt lists) contains a number the reference's answers.json enters (predictions
 # and measurements, written to 4 significant digits, as a word; numbers of fewer digits, such as 0.25,
 # 1.02 or 2, are everyday numbers and not searched, nor are the meshes' vertex lists), and no sheet's
 # experiment states a tolerance.
@@ -9,7 +9,8 @@ set -uo pipefail
 root=$1
 cd "$root" || exit 1
 bad=0
-mapfile -t shipped < <(git ls-files | grep -v -E '^(solutions|tests/instructor)/|\.obj$' | while read -r f; do [[ -f $f ]] && echo "$f"; done)
+mapfile -t keep < <(sed 's/#.*//; s/[[:space:]]*$//' tools/student_copy.txt | grep .)
+mapfile -t shipped < <(git ls-files -- "${keep[@]}" | grep -v -E '\.obj$' | while read -r f; do [[ -f $f ]] && echo "$f"; done)
 ((${#shipped[@]} > 100)) || { echo "FAIL: git ls-files lists ${#shipped[@]} files in $root"; exit 1; }
 n=0
 for answers in solutions/[0-9][0-9]_*/answers.json; do

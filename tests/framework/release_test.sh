@@ -2,8 +2,9 @@
 # ./lab release writes a student distribution that builds, runs and grades on its own:
 # no solutions/, no instructor tests, every graded test "not implemented", every scene stops
 # with "not implemented: exercise ..." instead of crashing. The copy holds exactly the committed files
-# (git ls-tree HEAD) minus solutions/ and tests/instructor/, and gives away no reference function body
+# (git ls-tree HEAD) that tools/student_copy.txt lists, and gives away no reference function body
 # (clothlab-leak-check, the last step).
+# The copy holds exactly what tools/student_copy.txt lists (what release.leak_test searches for answers).
 # The copy carries the reference of every stage as compiled objects only (framework/reference/, made
 # by the instructor's build BUILD_DIR, stripped): the test finishes stages 01-04 as a student would,
 # runs pbd_sphere with `./lab build --reference 05,06`, edits a stage and sees `./lab run` run the edit;
@@ -20,21 +21,35 @@ fail() { echo "FAIL: $*"; exit 1; }
 CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/copy" >"$tmp/release.log" 2>&1 || { cat "$tmp/release.log"; fail "lab release"; }
 grep -q "reference objects" "$tmp/release.log" || fail "lab release does not report the reference objects: $(tail -2 "$tmp/release.log")"
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
-[[ ! -e $tmp/copy/solutions && ! -e $tmp/copy/tests/instructor ]] || fail "copy contains solutions/ or tests/instructor/"
+for d in solutions tests/instructor docs/instructor slides tests/framework; do
+  [[ ! -e $tmp/copy/$d ]] || fail "the copy contains $d/ (instructor only)"
+done
 # The experiments' numbers are graded by the instructor: the copy's points files keep only the check
 # that the answers file is complete.
 for f in "$tmp"/copy/tests/[0-9][0-9]_*.points.json; do
   jq -e '(.tests | keys | map(select(startswith("Experiments."))) == ["Experiments.AnswerFileIsComplete"])' "$f" >/dev/null \
     || fail "$f in the copy: Experiments entries other than AnswerFileIsComplete: $(jq -c '.tests | keys | map(select(startswith("Experiments.")))' "$f")"
 done
-# Exactly the committed files: nothing untracked, no build output.
-{ git -C "$root" ls-tree -r --name-only HEAD | grep -v -E '^(solutions|tests/instructor)/'; echo .github/workflows/grade.yml
+# Exactly the committed files tools/student_copy.txt lists (README.student.md as README.md): nothing
+# untracked, no build output, nothing the list leaves out.
+mapfile -t keep < <(git -C "$root" show HEAD:tools/student_copy.txt | sed 's/#.*//; s/[[:space:]]*$//' | grep .)
+{ git -C "$root" archive --format=tar HEAD -- "${keep[@]}" | tar -t | grep -v '/$' | sed 's|^README\.student\.md$|README.md|'; echo .github/workflows/grade.yml
   git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'
   echo framework/reference/compiler.txt
   (cd "$tmp/copy" && find framework/reference -name '*.o' 2>/dev/null); } | sort >"$tmp/want.txt"
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
-  || fail "the copy is not git ls-tree HEAD minus solutions/, tests/instructor/, plus the CI workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+  || fail "the copy is not what tools/student_copy.txt lists of git ls-tree HEAD, plus the CI workflow, framework/stubs/ and framework/reference/ (*.o, compiler.txt): $(diff "$tmp/want.txt" "$tmp/got.txt" | grep '^[<>]' | head -5 | tr '\n' ' ')"
+# Every Markdown link in the copy leads to a file in the copy (not to a doc the list leaves out).
+dead=""
+while IFS= read -r -d '' md; do
+  while IFS= read -r ref; do
+    path=${ref%%#*}
+    [[ -z $path || $path == http* || $path == mailto:* ]] && continue
+    [[ -e $(dirname "$md")/$path ]] || dead+="${md#$tmp/copy/} -> $ref; "
+  done < <(grep -oE '\]\([^)[:space:]]+\)' "$md" | sed -E 's/^\]\((.*)\)$/\1/')
+done < <(find "$tmp/copy" -name '*.md' -print0)
+[[ -z $dead ]] || fail "links in the copy to files it does not hold (tools/student_copy.txt leaves them out): $dead"
 # The reference objects: every stage of solutions/ has some, no source beside them, no debug information
 # (source paths, lines), no path into solutions/ (a Debug build's assert messages would quote code).
 for d in "$root"/solutions/[0-9][0-9]_*/; do
@@ -78,6 +93,11 @@ export CLOTHLAB_BUILD_TYPE=Debug
 ./lab grade --json "$tmp/grade.json" >"$tmp/grade.log" 2>&1 || { tail -20 "$tmp/grade.log"; fail "grading the copy"; }
 grep -q '"max_points": [1-9]' "$tmp/grade.json" || fail "grade.json has no points"
 grep -q "graded by the instructor" "$tmp/grade.log" || fail "./lab grade in the copy does not say that the experiments' numbers are graded by the instructor"
+# ... and how many points that is per stage: the points the copy's points files record as graded apart.
+want=$(for f in tests/[0-9][0-9]_*.points.json; do n=$(basename "$f"); printf ', %s: %s' "${n:0:2}" "$(jq '.graded_apart.experiments // 0' "$f")"; done)
+grep -qF "the experiments' numbers (points per stage ${want:2})" "$tmp/grade.log" && grep -q "each stage's write-up" "$tmp/grade.log" \
+  || fail "./lab grade in the copy does not name the points it leaves out (${want:2}): $(grep -A1 'Not counted' "$tmp/grade.log")"
+[[ $(jq '[.graded_apart.experiments // 0] | add' tests/04_*.points.json) -gt 0 ]] || fail "tests/04_*.points.json in the copy records no experiment points graded apart"
 grep -q '"passed": true' "$tmp/grade.json" && fail "the untouched copy passes a graded test: $(grep -B3 '"passed": true' "$tmp/grade.json" | head -4)"
 # The copy's own graded binaries (its stubs): every test fails with "not implemented", through the grader.
 targets=(clothlab)
@@ -151,6 +171,17 @@ cp "$tmp/compiler.txt" framework/reference/compiler.txt
 tr -s ' \n' ' ' <"$tmp/other.log" | grep -q "compiled by GNU 0.0.1 .* they are not used" && grep -q "stage 05 (05_bending) uses stage_05_exercises" "$tmp/other.log" \
   || fail "reference objects of another compiler: no warning or not ignored: $(grep -A3 Warning "$tmp/other.log" | head -8)"
 rm -rf "$tmp/other"
+# A copy moved with its own build/ inside (cp -a): the next command builds again in the new folder and
+# writes nothing into the old one (here the old one is only named in the copied build's cache).
+mkdir -p "$tmp/moved" && cp -a "$tmp/copy/." "$tmp/moved/" && mkdir -p "$tmp/moved/build"
+printf 'CMAKE_HOME_DIRECTORY:INTERNAL=%s\n' "$tmp/gone" >"$tmp/moved/build/CMakeCache.txt"
+touch "$tmp/moved/build/old-marker"
+(cd "$tmp/moved" && env -u CLOTHLAB_BUILD CLOTHLAB_BUILD_TYPE=Debug ./lab build) >"$tmp/moved.log" 2>&1 || { tail -5 "$tmp/moved.log"; fail "./lab build in a moved copy"; }
+grep -q "note: .*build was built for $tmp/gone (this folder was moved or copied); building it again here" "$tmp/moved.log" \
+  && [[ ! -e $tmp/moved/build/old-marker && $(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$tmp/moved/build/CMakeCache.txt") == "$tmp/moved" ]] \
+  || fail "a moved copy's build is not made again in its new folder: $(head -3 "$tmp/moved.log")"
+[[ ! -e $tmp/gone ]] || fail "the moved copy's build wrote into its old folder"
+rm -rf "$tmp/moved"
 # Last, so that the checks above run even while a known leak waits to be removed.
 "$leak_check" "$root" "$tmp/copy" || fail "the copy gives away reference code (lines above)"
 echo "release copy builds, grades (0 points) and runs every scene up to 'not implemented'; with stages 01-04 done and the reference objects for 05-06 pbd_sphere runs, and an edit runs at once; no untracked file, no leak"

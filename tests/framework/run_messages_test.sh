@@ -2,10 +2,12 @@
 # The run's messages: a pinned particle that moves is reported at once, naming the pass
 # and the stage that moved it, and with --strict the run stops there (exit 3); the reference moves no
 # pin; an unstable run and a strict stop each state their reason once.
-# A pass that creates momentum in a scene without pins is reported with its pass and stage too.
+# A pass that creates momentum in a scene without pins is reported with its pass and stage too, and so
+# is the pass that blew a run up (exercise 4.3 with its sign flipped): not only "unstable at step N".
 # Usage: run_messages_test.sh CLOTHLAB PLANTED_04_WEIGHTING_LEFT_OUT PLANTED_05_Q1_NOT_BALANCED SOURCE_DIR
+#        PLANTED_04_SIGN_FLIPPED
 set -u
-exe=$1 planted=$2 planted5=$3 root=$4
+exe=$1 planted=$2 planted5=$3 root=$4 planted_sign=$5
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 bad=0
 fail() { echo "FAIL: $*"; bad=1; }
@@ -45,5 +47,15 @@ grep -q "warning: momentum created: at step 2[0-9] (t = .*) the pass 'constraint
 n=$(grep -c "unstable at step" "$tmp/unstable")
 [[ $n == 1 ]] || fail "the unstable run states its reason $n times, want once: $(cat "$tmp/unstable")"
 
+# A blow-up from a wrong sign in exercise 4.3: the message names the pass and the exercise, once.
+"$planted_sign" run "$curtain" --quiet >"$tmp/sign" 2>&1; rc=$?
+[[ $rc == 3 ]] || fail "4.3 with its sign flipped: exit $rc, want 3 (a blow-up): $(tail -2 "$tmp/sign")"
+grep -q "unstable at step [0-9]* (t = .*): .*; it first blew up in the pass 'constraints: distance' (stage 04, exercise 4.3)" "$tmp/sign" \
+  || fail "the blow-up of 4.3 with its sign flipped does not name the distance pass and exercise 4.3: $(grep -i unstable "$tmp/sign")"
+n=$(grep -c "it first blew up in" "$tmp/sign")
+[[ $n == 1 ]] || fail "the blow-up names its pass $n times, want once"
+# The explicit Euler spring above has no passes to name: its message stays as it was.
+grep -q "it first blew up" "$tmp/unstable" && fail "the unstable spring names a pass: $(grep unstable "$tmp/unstable")"
+
 ((bad == 0)) || exit 1
-echo "a moved pin and created momentum are reported with their pass and stage (a pin stops the run with --strict); each reason is said once"
+echo "a moved pin, created momentum and a blow-up are reported with their pass and stage (a pin stops the run with --strict); each reason is said once"

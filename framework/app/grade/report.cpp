@@ -17,19 +17,39 @@ std::string bonusNote(double earned, bool any) {
 bool hasBonus(const StageResult& s) {
     return std::any_of(s.tests.begin(), s.tests.end(), [](const TestResult& t) { return t.bonus; });
 }
+/// Tests passed of the required (bonus = false) or the bonus tests (true), and how many there are.
+std::pair<int, int> counted(const StageResult& s, bool bonus) {
+    int passed = 0, all = 0;
+    for (const auto& t : s.tests)
+        if (t.bonus == bonus) ++all, passed += t.passed ? 1 : 0;
+    return {passed, all};
+}
+double maxBonus(const StageResult& s) {
+    double m = 0;
+    for (const auto& t : s.tests) m += t.bonus ? t.max_points : 0.0;
+    return m;
+}
+/// "   + bonus 0 / 5 tests, 0 / 8 points" for a stage with bonus tests (counted apart), else "".
+std::string bonusColumns(const StageResult& s) {
+    if (!hasBonus(s)) return "";
+    const auto [passed, all] = counted(s, true);
+    char b[96];
+    std::snprintf(b, sizeof b, "   + bonus %d / %d tests, %g / %g points", passed, all, s.bonus(), maxBonus(s));
+    return b;
+}
 }  // namespace
 
 void printTable(const std::vector<StageResult>& stages, bool verbose, int lines) {
-    double pts = 0, max = 0, bonus = 0;
-    bool any_bonus = false;
+    double pts = 0, max = 0, bonus = 0, max_bonus = 0;
     std::printf("\n%-6s %-44s %9s %15s\n", "stage", "title", "tests", "points");
     for (const auto& s : stages) {
-        std::printf("%-6s %-44s %4d / %-3zu %7.1f / %-5.1f%s\n", s.stage.c_str(), s.title.c_str(), s.passed(), s.tests.size(),
-                    s.points(), s.max_points(), bonusNote(s.bonus(), hasBonus(s)).c_str());
+        const auto [passed, all] = counted(s, false);
+        std::printf("%-6s %-44s %4d / %-3d %7.1f / %-5.1f%s\n", s.stage.c_str(), s.title.c_str(), passed, all, s.points(),
+                    s.max_points(), bonusColumns(s).c_str());
         pts += s.points();
         max += s.max_points();
         bonus += s.bonus();
-        any_bonus = any_bonus || hasBonus(s);
+        max_bonus += maxBonus(s);
         if (!verbose) continue;
         if (s.status != "graded") {
             std::string what = s.status;
@@ -42,7 +62,9 @@ void printTable(const std::vector<StageResult>& stages, bool verbose, int lines)
                 std::printf("    %s %s\n        %s\n", t.bonus ? "BONUS NOT EARNED" : "FAIL", t.name.c_str(),
                             firstLines(t.message, lines).c_str());
     }
-    std::printf("%-6s %-44s %9s %7.1f / %-5.1f%s\n\n", "total", "", "", pts, max, bonusNote(bonus, any_bonus).c_str());
+    char b[96] = "";
+    if (max_bonus > 0) std::snprintf(b, sizeof b, "   + bonus %g / %g points", bonus, max_bonus);
+    std::printf("%-6s %-44s %9s %7.1f / %-5.1f%s\n\n", "total", "", "", pts, max, b);
 }
 
 json resultsJson(const std::vector<StageResult>& stages) {
@@ -156,7 +178,10 @@ std::string markdownTable(const std::vector<StageResult>& stages) {
     bool any_bonus = false;
     char b[128];
     for (const auto& s : stages) {
-        std::snprintf(b, sizeof b, " | %d / %zu | %g / %g%s |\n", s.passed(), s.tests.size(), s.points(), s.max_points(),
+        const auto [passed, all] = counted(s, false);
+        const auto [bonus_passed, bonus_all] = counted(s, true);
+        const std::string bonus_tests = bonus_all ? " + " + std::to_string(bonus_passed) + " / " + std::to_string(bonus_all) + " bonus" : "";
+        std::snprintf(b, sizeof b, " | %d / %d%s | %g / %g%s |\n", passed, all, bonus_tests.c_str(), s.points(), s.max_points(),
                       bonusNote(s.bonus(), hasBonus(s)).c_str());
         md += "| " + s.stage + " | " + mdCell(s.title) + " | " + mdCell(s.status) + b;
         pts += s.points();

@@ -60,7 +60,7 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
         out << buf;
     }
     if (!r.warnings.empty()) {
-        out << "warnings: this result is not a result (" << r.warnings.size() << "):\n";
+        out << "warnings (" << r.warnings.size() << "): do not trust the numbers above; each warning says why and what would help\n";
         for (const RunWarning& w : r.warnings) out << "  warning: " << warningText(w, sim.scene()) << "\n";
     }
     for (const std::string& n : r.notes) out << "note: " << n << "\n";

@@ -75,6 +75,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         callbacks_.velocityUpdate = [this](const Matrix3X&, Matrix3X& v) {
             auto timed = timer_.time(pass_.velocity);
             velocityUpdate(v, contacts_);  // exercise 6.4
+            checkBlowUp(v, pass_.velocity);
         };
     }
     if (uses_.selfCollision) {  // stage 07: the cloth against itself
@@ -104,6 +105,7 @@ void PbdSimulation::step() {
         auto timed = timer_.time(pass_.step);  // the passes called back from pbdStep() are booked on their own
         firstIteration_ = true;
         pbdStep(P_, callbacks_, scene_.pbd.damping, sv.iterations, subDt_);  // lines (5)-(16), exercise 3.3
+        checkBlowUp(P_.x, pass_.step);  // lines (12)-(16): v and x from p
     }
     P_.t += sv.dt;
 }
@@ -171,6 +173,7 @@ void PbdSimulation::projectConstraints(Matrix3X& p) {
     const VectorX& w = P_.w;
     const double dt2 = subDt_ * subDt_;
     checkPins(p, pass_.step);  // lines (5)-(7) predicted p
+    checkBlowUp(p, pass_.step);
     if (uses_.distance)
         constraintPass(pass_.distance, true, p, [&](Matrix3X& q) {
             if (xpbd_) distanceSweep_.xpbd(w, scene_.constraints.distance.compliance / dt2, linkLambda_, q);
@@ -200,6 +203,7 @@ void PbdSimulation::constraintPass(int pass, bool internal, Matrix3X& p, Project
     }
     checkPins(p, pass);  // a pinned particle (w = 0) has not moved
     if (momentum) checkMomentum(before_, p, pass);  // constraints between particles keep the momentum
+    checkBlowUp(p, pass);  // (only when a blow-up is being traced to its pass)
 }
 
 double PbdSimulation::rmsBendingError() const {

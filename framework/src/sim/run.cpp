@@ -36,17 +36,23 @@ bool meantInextensible(const Scene& s) {
     return s.solver.method == Method::Pbd ? s.constraints.distance.stiffness >= 1.0 : s.constraints.distance.compliance == 0.0;
 }
 
-// "the pass 'constraints: distance' (stage 04, exercise 4.3)": the pass that moved a pin, and where
-// its code is; without a pass (a method that does not check its passes): the method's step.
-std::string movedBy(const RunWarning& w, const Scene& s) {
+// "the pass 'constraints: distance' (stage 04, exercise 4.3)": a pass, and where its code is; without a
+// pass (a method that does not check its passes): the method's step.
+std::string passAndStage(const std::string& name, const Scene& s) {
     static const std::vector<std::pair<std::string, std::string>> stages = {
         {"constraints: distance", "stage 04, exercise 4.3"}, {"constraints: bending", "stage 05, exercise 5.2"},
-        {"constraints: collision", "stage 06"}, {"constraints: self-collision", "stage 07"},
-        {"damp, predict, update", "stage 03, lines (5)-(7)"}};
-    if (w.pass.empty()) return std::string("the ") + methodName(s.solver.method) + " step";
+        {"constraints: collision", "stage 06, exercises 6.1-6.3"}, {"collisions: velocity update", "stage 06, exercise 6.4"},
+        {"constraints: self-collision", "stage 07, exercises 7.5-7.6"}, {"damp, predict, update", "stage 03, exercise 3.3"}};
+    if (name.empty()) return std::string("the ") + methodName(s.solver.method) + " step";
     for (const auto& [pass, where] : stages)
-        if (w.pass.find(pass) != std::string::npos) return "the pass '" + w.pass + "' (" + where + ")";
-    return "the pass '" + w.pass + "'";
+        if (name.find(pass) != std::string::npos) return "the pass '" + name + "' (" + where + ")";
+    return "the pass '" + name + "'";
+}
+
+// The pass that moved a pin: before the constraints, the prediction of lines (5)-(7).
+std::string movedBy(const RunWarning& w, const Scene& s) {
+    if (w.pass == "damp, predict, update") return "the pass '" + w.pass + "' (stage 03, exercise 3.3, lines (5)-(7))";
+    return passAndStage(w.pass, s);
 }
 
 }  // namespace
@@ -168,6 +174,7 @@ std::string instabilityReason(const State& s, double bound) { return stopReason(
 std::string stepAndCheck(Simulation& sim, long long step, double bound, StopCause* cause) {
     StopCause c = StopCause::None;
     std::string detail;
+    const State before = sim.state();  // to trace a blow-up to its pass
     try {
         sim.step();
         c = instabilityCause(sim.state(), bound);
@@ -179,6 +186,12 @@ std::string stepAndCheck(Simulation& sim, long long step, double bound, StopCaus
     if (c == StopCause::None) return "";
     std::ostringstream m;
     m << "unstable at step " << step << " (t = " << sim.state().t << " s): " << stopReason(c, bound, detail);
+    if (c != StopCause::SolverFailure) {
+        const std::string pass = sim.blowUpBy(before, bound);
+        if (!pass.empty())
+            m << "; it first blew up in " << passAndStage(pass, sim.scene()) << (step <= 3 ? ": at the start of a run, "
+                 "that is a wrong sign or weight there, more often than a time step too large" : "");
+    }
     return m.str();
 }
 

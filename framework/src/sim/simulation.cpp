@@ -46,6 +46,23 @@ void Simulation::checkPins(const Matrix3X& p, int pass) {
         }
 }
 
+void Simulation::noteBlowUp(const Matrix3X& q, int pass) {
+    if (!q.allFinite() || (q.size() > 0 && q.colwise().norm().maxCoeff() >= blowUpBound_))
+        blowUpBy_ = timer_.passes()[static_cast<size_t>(pass)].name;
+}
+
+std::string Simulation::blowUpBy(const State& before, double bound) {
+    state() = before;
+    blowUpBy_.clear();
+    blowUpBound_ = bound;
+    try {
+        step();
+    } catch (const std::exception&) {  // a solver failure names no pass
+    }
+    blowUpBound_ = 0.0;
+    return blowUpBy_;
+}
+
 double Simulation::energy() const {
     const State& s = state();
     return kineticEnergy(s.w, s.v) + gravityEnergy(s.w, s.x, scene_.forces.gravity) + elasticEnergy();

@@ -67,6 +67,14 @@ public:
     const std::string& momentumCreatedBy() const { return momentumBy_; }
     /// What it created: \f$ |\sum_i m_i \Delta\vec p_i| / \sum_i m_i |\Delta\vec p_i| \f$ over that pass (1; 0 when none).
     double momentumCreated() const { return momentumCreated_; }
+    /// Which pass blew the state up: the step from `before` is taken again with a check after each
+    /// pass, and the first pass after which a position is NaN or infinite or a particle left the
+    /// region \f$ |\vec x_i| < \f$ `bound` is named, e.g. "constraints: distance"; "" when the method
+    /// checks no passes (only position-based methods do) or none did. The state is left as the step
+    /// left it. For the message of a blow-up (stepAndCheck()), never on the hot path.
+    /// @param before  the state before the step that blew up
+    /// @param bound   the region's radius, m (report.blowup)
+    std::string blowUpBy(const State& before, double bound);
     /// Edges to draw (springs or distance constraints), pairs of particle indices.
     const std::vector<Eigen::Vector2i>& edges() const { return edges_; }
     /// Triangles to draw (cloth surface), triples of particle indices; empty for springs and chains.
@@ -90,6 +98,14 @@ protected:
     /// @param p       after it, m
     /// @param pass    the pass, as timer_.add() returned it
     void checkMomentum(const Matrix3X& before, const Matrix3X& p, int pass);
+    /// Only inside blowUpBy(): after pass `pass` changed the positions or velocities `q` (3 x N), the
+    /// first pass that left one of them NaN or infinite, or with a norm of at least the bound, is
+    /// remembered. Costs nothing otherwise.
+    /// @param q     positions (m) or velocities (m/s) after the pass
+    /// @param pass  the pass, as timer_.add() returned it
+    void checkBlowUp(const Matrix3X& q, int pass) {
+        if (blowUpBound_ > 0.0 && blowUpBy_.empty()) noteBlowUp(q, pass);
+    }
     /// The scene has pinned particles (w = 0): checkMomentum() does nothing then.
     bool hasPins() const { return !pinned_.empty(); }
     /// Elastic energy of the method's springs (0 for position-based methods), J.
@@ -108,6 +124,9 @@ private:
     double initialEnergy_ = 0.0;                ///< energy at t = 0, J
     std::vector<int> pinned_;                   ///< the particles with w = 0
     std::string pinMovedBy_;                    ///< see pinMovedBy()
+    std::string blowUpBy_;                      ///< see blowUpBy()
+    double blowUpBound_ = 0.0;                  ///< > 0 only inside blowUpBy(): checkBlowUp() checks
+    void noteBlowUp(const Matrix3X& q, int pass);
     std::string momentumBy_;                    ///< see momentumCreatedBy()
     double momentumCreated_ = 0.0;              ///< see momentumCreated()
 };
