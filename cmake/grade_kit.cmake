@@ -1,5 +1,5 @@
 # The grading kit: everything grading a submission needs from this build, listed in
-# build/grade-kit/kit.json for clothlab-grade (framework/app/grade/submission.h):
+# build/grade-kit/kit.json for clothlab-grade (framework/grading/grader/submission.h):
 #   - a copy of the public headers only (clothlab/core, clothlab/exercise): a submission is
 #     compiled in a sandbox that sees these and its own files, nothing else of the tree; beside
 #     them a precompiled header of what the stage headers include (grade_kit_precompiled.h), so
@@ -9,7 +9,7 @@
 #     student copy the objects of framework/reference/, when present)
 #     its stub and its proxies (the test side of running the submission in a process of its own);
 #   - the graded main(), the framework library and GoogleTest to link the test process with, and
-#     the main() of the submission process (framework/app/grade/remote/).
+#     the main() of the submission process (framework/grading/: test_process/, submission_process/, wire/).
 set(_kit "${CMAKE_BINARY_DIR}/grade-kit")
 file(GLOB _public CONFIGURE_DEPENDS
   "${PROJECT_SOURCE_DIR}/framework/include/clothlab/core/*.h"
@@ -65,7 +65,7 @@ if(CLOTHLAB_GOLD_LINKER)
 endif()
 
 set(_stages_json "")
-set(_kit_deps clothlab_kit_precompiled_header clothlab-grade clothlab_graded_main clothlab_framework clothlab_remote_peer clothlab_remote_client
+set(_kit_deps clothlab_kit_precompiled_header clothlab-grade clothlab_test_process_main clothlab_framework clothlab_wire clothlab_test_process
   clothlab_submission_main)
 foreach(NN IN LISTS CLOTHLAB_STAGES)
   if(NOT TARGET gradedtests_${NN})
@@ -85,12 +85,12 @@ foreach(NN IN LISTS CLOTHLAB_STAGES)
      \"tests\": [\"$<JOIN:$<TARGET_OBJECTS:gradedtests_${NN}>,\", \">\"],
      \"reference\": ${_ref},
      \"stub\": [\"$<JOIN:$<TARGET_OBJECTS:stage_${NN}_stubs>,\", \">\"],
-     \"proxy\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_remote_proxies_${NN}>,\", \">\"]}")
+     \"proxy\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_proxies_${NN}>,\", \">\"]}")
   get_target_property(_stubs stage_${NN}_stubs ALIASED_TARGET)
   if(NOT _stubs)
     set(_stubs stage_${NN}_stubs)
   endif()
-  list(APPEND _kit_deps gradedtests_${NN} ${_stubs} clothlab_remote_proxies_${NN})
+  list(APPEND _kit_deps gradedtests_${NN} ${_stubs} clothlab_proxies_${NN})
 endforeach()
 
 file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
@@ -99,11 +99,11 @@ file(GENERATE OUTPUT "${_kit}/kit.json" CONTENT "{
   \"include_dir\": \"${_kit}/include\",
   \"precompiled_header\": \"clothlab_precompiled.h\",
   \"system_includes\": [\"$<JOIN:$<TARGET_PROPERTY:Eigen3::Eigen,INTERFACE_INCLUDE_DIRECTORIES>,\", \">\"],
-  \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_graded_main>,\", \">\"],
+  \"main_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_test_process_main>,\", \">\"],
   \"libs\": [\"$<TARGET_FILE:clothlab_framework>\", \"$<TARGET_FILE:tinyobjloader::tinyobjloader_double>\", \"$<TARGET_FILE:GTest::gtest>\"],
   \"link_flags\": [${_link_flags}],
-  \"client_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_remote_peer>;$<TARGET_OBJECTS:clothlab_remote_client>,\", \">\"],
-  \"server_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_submission_main>;$<TARGET_OBJECTS:clothlab_remote_peer>,\", \">\"],
+  \"client_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_wire>;$<TARGET_OBJECTS:clothlab_test_process>,\", \">\"],
+  \"server_objects\": [\"$<JOIN:$<TARGET_OBJECTS:clothlab_submission_main>;$<TARGET_OBJECTS:clothlab_wire>,\", \">\"],
   \"server_link_flags\": [\"-lseccomp\"],
   \"points_dir\": \"${PROJECT_SOURCE_DIR}/tests\",
   \"stages\": [

@@ -358,10 +358,8 @@ void selfCollisionStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const Vec3& g
     for (int i = 0; i < x.cols(); ++i)
         if (w[i] > 0) v.col(i) += dt * g;
     Matrix3X p = x + dt * v;
-    std::vector<DistanceLink> pairs;  // separation distance h for every pair
-    for (const ParticlePair& q : findNeighbourPairs(p, buildSpatialHash(p, 2.0 * h, 2 * static_cast<int>(x.cols())), 2.0 * h))
-        pairs.push_back({q.i, q.j, h});
-    for (int it = 0; it < iterations; ++it) projectSelfCollisionSweep(pairs, x, w, 0.0, p);  // your projectSeparation per pair
+    const std::vector<ParticlePair> pairs = findNeighbourPairs(p, buildSpatialHash(p, 2.0 * h, 2 * static_cast<int>(x.cols())), 2.0 * h);
+    for (int it = 0; it < iterations; ++it) projectSelfCollisionSweep(pairs, h, x, w, 0.0, p);  // your projectSeparation per pair
     v = (p - x) / dt;
     x = p;
 }

@@ -19,7 +19,7 @@ for variant in solutions exercises; do
   exe=$build/bin/grade_04_$variant
   [[ -x $exe ]] || fail "no $exe (build grade_04_$variant first)"
   answers=$root/$variant/04_distance/answers.json
-  "$grader" --points-dir "$root/tests" --stage "04=$exe" --answers "04=$answers" --json "$tmp/$variant.json" \
+  "$grader" --points-dir "$root/tests" --binary "04=$exe" --answers "04=$answers" --json "$tmp/$variant.json" \
     --gradescope "$tmp/$variant.gs.json" --markdown "$tmp/$variant.md" --junit "$tmp/$variant.xml" >"$tmp/$variant.log" 2>&1
 done
 # The table counts the bonus tests apart from the stage's: "16 / 16 ... 27.0 / 27.0   + bonus 5 / 5 tests, 8 / 8 points".
@@ -49,14 +49,14 @@ grep -q "skipped=\"$nbonus\"" "$tmp/exercises.xml" && [[ $(grep -c '<skipped mes
 
 # A class of one (the reference, stage 04 only): gradebook.csv's last column is the bonus.
 mkdir -p "$tmp/class/ref" && cp -r "$root/solutions/04_distance" "$tmp/class/ref/"
-"$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --only 04 >"$tmp/class.log" 2>&1 || { tail "$tmp/class.log"; fail "grading the class"; }
+"$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --stage 04 >"$tmp/class.log" 2>&1 || { tail "$tmp/class.log"; fail "grading the class"; }
 [[ $(head -1 "$tmp/out/gradebook.csv") == *",total,max,status,bonus" ]] && grep -q "^ref,.*,$max,$max,ok,$bonus$" "$tmp/out/gradebook.csv" \
   || fail "gradebook.csv: the reference's row must end with $max,$max,ok,$bonus: $(cat "$tmp/out/gradebook.csv")"
 
 # Bad points files: one error naming the file and the field.
 bad() {  # bad WHAT JQ-EDIT EXPECTED-ERROR
   mkdir -p "$tmp/bad" && cp "$root"/tests/*.points.json "$tmp/bad/" && jq "$2" "$pf" >"$tmp/bad/04_distance.points.json"
-  "$grader" --points-dir "$tmp/bad" --stage "04=$build/bin/grade_04_solutions" >"$tmp/bad.log" 2>&1 && fail "$1: accepted"
+  "$grader" --points-dir "$tmp/bad" --binary "04=$build/bin/grade_04_solutions" >"$tmp/bad.log" 2>&1 && fail "$1: accepted"
   [[ $(grep -c '^error' "$tmp/bad.log") -eq 1 ]] && grep -qE "^error: .*04_distance\.points\.json: $3" "$tmp/bad.log" || fail "$1: $(cat "$tmp/bad.log")"
 }
 bad "a test under tests and bonus" '.bonus[(.tests | keys_unsorted[0])] = 1' 'bonus\.Task4_1_[A-Za-z_.]+: also under tests'

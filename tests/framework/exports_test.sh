@@ -45,9 +45,9 @@ gradescope_fields() {
 for variant in solutions exercises; do
   exe=$build/bin/grade_01_$variant
   [[ -x $exe ]] || fail "no $exe (build grade_01_$variant first)"
-  "$grader" --points-dir "$points" --quiet --stage "01=$exe" --answers "01=$root/$variant/01_hooke/answers.json" --json "$tmp/$variant.json" \
+  "$grader" --points-dir "$points" --quiet --binary "01=$exe" --answers "01=$root/$variant/01_hooke/answers.json" --json "$tmp/$variant.json" \
     --gradescope "$tmp/$variant.gs.json" --markdown "$tmp/$variant.md" >"$tmp/$variant.log" 2>&1 \
-    || { tail "$tmp/$variant.log"; fail "clothlab-grade --stage 01=grade_01_$variant"; }
+    || { tail "$tmp/$variant.log"; fail "clothlab-grade --binary 01=grade_01_$variant"; }
   gradescope_fields "$tmp/$variant.gs.json"
   [[ $(jq '.tests | length' "$tmp/$variant.gs.json") -eq $n01 ]] || fail "$variant: not one Gradescope test per graded test ($n01)"
   jq -e --slurpfile own "$tmp/$variant.json" '.score == $own[0].points and ([.tests[].max_score] | add) == $own[0].max_points' \
@@ -66,7 +66,7 @@ grep -q "^| \*\*total\*\* | | | | \*\*$max01 / $max01\*\* |" "$tmp/solutions.md"
 mkdir -p "$tmp/sub/01_hooke"
 cp "$root"/exercises/01_hooke/*.cpp "$tmp/sub/01_hooke/"
 echo 'this line is not C++ ;' >>"$tmp/sub/01_hooke/hooke.cpp"
-"$grader" --kit "$kit" --submission "$tmp/sub" --work "$tmp/work" --only 01 --gradescope "$tmp/broken.gs.json" \
+"$grader" --kit "$kit" --submission "$tmp/sub" --work "$tmp/work" --stage 01 --gradescope "$tmp/broken.gs.json" \
   --markdown "$tmp/broken.md" >"$tmp/broken.log" 2>&1 || { tail "$tmp/broken.log"; fail "grading a stage that does not compile"; }
 gradescope_fields "$tmp/broken.gs.json"
 jq -e --argjson n "$n01" '.score == 0 and (.tests | length) == $n
@@ -86,7 +86,7 @@ cp "$root"/exercises/01_hooke/*.cpp "$tmp/class/smith, carol/01_hooke/"
 printf '# Write-up\n\nalice explains the energy.\n' >"$tmp/class/alice@example.org/01_hooke/writeup.md"
 mkdir -p "$tmp/class/alice@example.org/out/report" && echo '<html>report 01</html>' >"$tmp/class/alice@example.org/out/report/01_hooke.html"
 ln -s /etc/passwd "$tmp/class/alice@example.org/out/report/02_mfn.html"
-"$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --only 01 --jobs 2 >"$tmp/class.log" 2>&1 \
+"$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/out" --stage 01 --jobs 2 >"$tmp/class.log" 2>&1 \
   || { tail "$tmp/class.log"; fail "grading the class"; }
 item="clothlab 01 $title01"
 printf '%s\n' "Identifier,$item" "alice@example.org,$max01" "bob,0" "\"smith, carol\",0" >"$tmp/moodle.want"
@@ -103,7 +103,7 @@ grep -q "write-ups of 1 in writeups/NAME/" "$tmp/class.log" || fail "the class s
 cut -d, -f1-2 "$tmp/out/gradebook.csv" | sed -n 2p | grep -qx "alice@example.org,$max01" || fail "gradebook.csv disagrees: $(head -3 "$tmp/out/gradebook.csv")"
 
 # 4. Bad input: one line "error: FILE: OPTION: reason", non-zero, before grading.
-"$grader" --points-dir "$points" --stage "01=$build/bin/grade_01_solutions" --gradescope "$tmp/no/such/dir/results.json" >"$tmp/bad.log" 2>&1 \
+"$grader" --points-dir "$points" --binary "01=$build/bin/grade_01_solutions" --gradescope "$tmp/no/such/dir/results.json" >"$tmp/bad.log" 2>&1 \
   && fail "--gradescope into a missing folder succeeds"
 [[ $(grep -c . "$tmp/bad.log") -eq 1 ]] && grep -qx "error: $tmp/no/such/dir/results.json: --gradescope: the folder $tmp/no/such/dir does not exist" "$tmp/bad.log" \
   || fail "--gradescope into a missing folder: $(cat "$tmp/bad.log")"

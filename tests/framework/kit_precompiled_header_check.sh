@@ -25,6 +25,6 @@ done
 mkdir -p "$tmp/sub" && cp -r "$root/solutions/01_hooke" "$tmp/sub/" || fail "no solutions/01_hooke"
 printf '\n#ifndef CLOTHLAB_PRECOMPILED_H\n#error compiled without the precompiled header\n#endif\n' >>"$tmp/sub/01_hooke/hooke.cpp"
 printf '#define CLOTHLAB_MY_SETTING 1\n#ifdef CLOTHLAB_PRECOMPILED_H\n#error the precompiled header came before my first define\n#endif\n#include "clothlab/exercise/01_hooke.h"\n' >"$tmp/sub/01_hooke/setting.cpp"
-"$grader" --kit "$kit" --submission "$tmp/sub" --work "$tmp/work" --only 01 >"$tmp/grade.log" 2>&1
+"$grader" --kit "$kit" --submission "$tmp/sub" --work "$tmp/work" --stage 01 >"$tmp/grade.log" 2>&1
 grep -qE '^01 .* ([0-9.]+) / \1 *$' "$tmp/grade.log" || { tail -15 "$tmp/grade.log"; fail "stage 01 with both checks did not compile to full points"; }
 echo "submission files compiled with the kit's flags read $pch.gch; the grader compiles a stage file with it and a file that defines a macro first without it"

@@ -106,7 +106,7 @@ cmake --build "$CLOTHLAB_BUILD" -j "$(nproc)" --target "${targets[@]}" >"$tmp/bu
 specs=()
 for exe in "$CLOTHLAB_BUILD"/bin/grade_*_exercises; do
   nn=$(basename "$exe"); nn=${nn#grade_}; nn=${nn%%_*}
-  specs+=(--stage "$nn=$exe" --answers "$nn=$(compgen -G "exercises/${nn}_*/answers.json" | head -1)")
+  specs+=(--binary "$nn=$exe" --answers "$nn=$(compgen -G "exercises/${nn}_*/answers.json" | head -1)")
 done
 ((${#specs[@]})) || fail "no graded test binaries in the copy"
 "$CLOTHLAB_BUILD/bin/clothlab-grade" --points-dir tests --quiet --expect all-fail --message "not implemented: exercise" --message "not entered yet" "${specs[@]}" \

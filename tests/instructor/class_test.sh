@@ -14,9 +14,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 class=$tmp/class; mkdir -p "$class"
 stages=(); for d in "$root"/exercises/[0-9][0-9]_*/; do stages+=("$(basename "$d")"); done
 
-# small (./lab test) grades stage 01 only (--only: the others read 0), where the class's
+# small (./lab test) grades stage 01 only (--stage: the others read 0), where the class's
 # hostile, broken and mistaken stages sit; full grades every stage.
-graded=" 01 "; only=(--only 01)
+graded=" 01 "; only=(--stage 01)
 [[ $size == full ]] && { graded=" ${stages[*]%%_*} "; only=(); }
 declare -A max expect status
 for s in "${stages[@]}"; do
@@ -62,7 +62,7 @@ add_mistake() {  # add_mistake NN_dir NAME
   local exe=$build/bin/grade_${nn}_mistake_$m src=$build/tests/mistakes/$dir/$m
   [[ -x $exe && -d $src ]] || fail "no built mistake $dir/$m (build first)"
   reference "$class/$name"; rm -rf "${class:?}/$name/$dir"; mkdir -p "$class/$name/$dir"; cp "$src"/*.cpp "$class/$name/$dir/"
-  "$grader" --points-dir "$root/tests" --stage "$nn=$exe" --quiet --json "$tmp/$name.json" >/dev/null 2>&1
+  "$grader" --points-dir "$root/tests" --binary "$nn=$exe" --quiet --json "$tmp/$name.json" >/dev/null 2>&1
   local pts; pts=$(grep -E '^  "points":' "$tmp/$name.json" | grep -oE '[0-9.]+' | head -1)
   [[ -n $pts ]] || fail "no points for the CMake-built $exe"
   expect_row "$name" ok "$nn=$(awk -v p="$pts" 'BEGIN { printf "%g", p }')"
@@ -166,7 +166,7 @@ grep -qE 'exercises/01_hooke/answers.json: (predict|measure)[.][a-z_]*[.]value: 
   || fail "ref_no_answers's feedback does not name exercises/01_hooke/answers.json (or names the sandbox path)"
 # The LMS imports (docs/grading.md "Exports") carry the same points per stage: moodle.csv is the
 # identifier and the stages, canvas.csv the identifier as Student and SIS User ID, a Points Possible row.
-# (With --only, the graded stages' columns.)
+# (With --stage, the graded stages' columns.)
 k=1; for ((i = 1; i <= ${#stages[@]}; i++)); do [[ $graded == *" ${H[$i]} "* ]] && k+=",$((i + 1))"; done
 tail -n +2 "$book" | cut -d, -f"$k" >"$tmp/book_points.csv"
 tail -n +2 "$tmp/out/moodle.csv" | cmp -s - "$tmp/book_points.csv" || fail "moodle.csv's points differ from gradebook.csv: $(head -3 "$tmp/out/moodle.csv")"

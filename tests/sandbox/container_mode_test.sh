@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The grader's two confinements (framework/app/grade/sandbox.h, docs/grading.md "Two confinements"),
+# The grader's two confinements (framework/grading/grader/sandbox.h, docs/grading.md "Two confinements"),
 # container mode tested under docker_default, a simulation of Docker's default confinement (issue 45).
 # Usage: container_mode_test.sh SOURCE_DIR BUILD_DIR MODE [ARGS]
 #   launcher      docker_default refuses namespaces as Docker's default profile does: bwrap prints
@@ -53,7 +53,7 @@ chosen)
     || { echo "skipped: bubblewrap does not work on this machine"; exit 77; }
   mkdir -p "$tmp/sub/01_hooke"
   printf 'int main() { return 0; }\n' >"$tmp/sub/01_hooke/hooke.cpp"  # rejected by the lint: nothing is compiled
-  "$grader" --kit "$kit" --submission "$tmp/sub" --work "$tmp/work" --only 01 --json "$tmp/r.json" >"$tmp/grade.log" 2>&1 \
+  "$grader" --kit "$kit" --submission "$tmp/sub" --work "$tmp/work" --stage 01 --json "$tmp/r.json" >"$tmp/grade.log" 2>&1 \
     || { cat "$tmp/grade.log"; fail "grading a rejected stage"; }
   grep -qx "sandbox: bubblewrap" "$tmp/grade.log" || fail "the table does not say 'sandbox: bubblewrap': $(tail -3 "$tmp/grade.log")"
   jq -e '.sandbox == "bubblewrap"' "$tmp/r.json" >/dev/null || fail "the JSON's sandbox: $(jq .sandbox "$tmp/r.json")"
@@ -82,8 +82,8 @@ load-bearing)
     bash "$root/tests/instructor/assemble_attack.sh" "$root" "$a" 01 "$tmp/class/$a" || fail "assembling $a"
   done
   # Through in_container.sh, as the red team grades: its check of the messages must catch the escapes.
-  CLOTHLAB_WEAKEN=landlock,seccomp bash "$root/tests/sandbox/in_container.sh" "$launcher" "$weakened" --kit "$kit" --class "$tmp/class" \
-    --out "$tmp/out" --only 01 --timeout 8 >"$tmp/grade.log" 2>&1 && fail "in_container.sh passed a class whose attacks escaped"
+  CLOTHLAB_WEAKEN=landlock,container-seccomp bash "$root/tests/sandbox/in_container.sh" "$launcher" "$weakened" --kit "$kit" --class "$tmp/class" \
+    --out "$tmp/out" --stage 01 --timeout 8 >"$tmp/grade.log" 2>&1 && fail "in_container.sh passed a class whose attacks escaped"
   grep -q "^in_container.sh: an attack escaped container mode" "$tmp/grade.log" || { tail -5 "$tmp/grade.log"; fail "the weakened grader (landlock, seccomp)"; }
   fb=$tmp/out/feedback
   grep -q "ESCAPED: read .*solutions/01_hooke/hooke.cpp: $(head -1 "$root/solutions/01_hooke/hooke.cpp" | cut -c1-40)" "$fb/ctor_reads_solutions.json" \
@@ -99,7 +99,7 @@ load-bearing)
   mkdir -p "$tmp/class2"
   bash "$root/tests/instructor/assemble_attack.sh" "$root" kill_other_runs 01 "$tmp/class2/1_kill_other_runs" || fail "assembling kill_other_runs"
   reference "$tmp/ref" && mkdir "$tmp/class2/2_reference" && mv "$tmp/ref/01_hooke" "$tmp/class2/2_reference/"
-  CLOTHLAB_WEAKEN=uid "$launcher" "$weakened" --kit "$kit" --class "$tmp/class2" --out "$tmp/out2" --only 01 --jobs 2 \
+  CLOTHLAB_WEAKEN=uid "$launcher" "$weakened" --kit "$kit" --class "$tmp/class2" --out "$tmp/out2" --stage 01 --jobs 2 \
     --timeout 8 >"$tmp/grade2.log" 2>&1 || { tail -5 "$tmp/grade2.log"; fail "the weakened grader (uid)"; }
   # Without a user per run nothing kills what a run left behind: the daemon of kill_other_runs (user
   # 64199, the test tool's one user) would end by itself within 30 s; end it now, by its process id.
@@ -113,20 +113,20 @@ load-bearing)
 no-landlock)
   reference "$tmp/ref"
   # The instructor's tree (solutions/, tests/instructor/) is readable by every user here: one line.
-  "$launcher" --no-landlock "$grader" --kit "$kit" --submission "$tmp/ref" --work "$tmp/work" --only 01 >"$tmp/out.log" 2>"$tmp/err.log" \
+  "$launcher" --no-landlock "$grader" --kit "$kit" --submission "$tmp/ref" --work "$tmp/work" --stage 01 >"$tmp/out.log" 2>"$tmp/err.log" \
     && fail "graded without Landlock with solutions/ readable: $(tail -3 "$tmp/out.log")"
   [[ $(wc -l <"$tmp/err.log") == 1 ]] || fail "not one line: $(cat "$tmp/err.log")"
   grep -q "^error: the sandbox does not work here: bubblewrap: bwrap cannot create a sandbox here (exit 1): bwrap: Creating new namespace failed: Operation not permitted; container mode without Landlock: the submission could read $root/" "$tmp/err.log" \
     || fail "the line does not name bubblewrap's failure and the file container mode cannot hide: $(cat "$tmp/err.log")"
   # A class: students could read each other's files.
-  mkdir -p "$tmp/class/a" && "$launcher" --no-landlock "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/classout" --only 01 >/dev/null 2>"$tmp/err.log" \
+  mkdir -p "$tmp/class/a" && "$launcher" --no-landlock "$grader" --kit "$kit" --class "$tmp/class" --out "$tmp/classout" --stage 01 >/dev/null 2>"$tmp/err.log" \
     && fail "graded a class without Landlock"
   grep -q "^error: .*container mode without Landlock: a class cannot be graded" "$tmp/err.log" || fail "--class without Landlock: $(cat "$tmp/err.log")"
   # The instructor's files out of other users' reach (a copy of the points files in a folder only root
   # may enter; no reference objects, so no solutions/ behind the kit): it grades, and says how.
   mkdir -p "$tmp/tree/tests" && chmod 700 "$tmp/tree" && cp "$root"/tests/*.points.json "$tmp/tree/tests/"
   jq --arg p "$tmp/tree/tests" '.points_dir = $p | .stages[].reference = []' "$kit" >"$tmp/kit.json"
-  "$launcher" --no-landlock "$grader" --kit "$tmp/kit.json" --submission "$tmp/ref" --work "$tmp/work" --only 01 --json "$tmp/r.json" \
+  "$launcher" --no-landlock "$grader" --kit "$tmp/kit.json" --submission "$tmp/ref" --work "$tmp/work" --stage 01 --json "$tmp/r.json" \
     >"$tmp/out.log" 2>&1 || { tail -5 "$tmp/out.log"; fail "grading without Landlock, the instructor's files out of reach"; }
   want=$(max_points "$root/tests/01_hooke.points.json")
   jq -e --argjson want "$want" '.points + .bonus == $want and (.sandbox | startswith("container mode without Landlock ("))' "$tmp/r.json" >/dev/null \

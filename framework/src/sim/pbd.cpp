@@ -164,7 +164,7 @@ void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
     for (const ParticlePair& q : findNeighbourPairs(p, buildSpatialHash(p, query, tableSize), query)) {
         if (P_.w[q.i] <= 0.0 && P_.w[q.j] <= 0.0) continue;
         if ((rest_.col(q.i) - rest_.col(q.j)).squaredNorm() < h * h) continue;
-        selfPairs_.push_back({q.i, q.j, h});
+        selfPairs_.push_back(q);
     }
 }
 
@@ -188,7 +188,7 @@ void PbdSimulation::projectConstraints(Matrix3X& p) {
         constraintPass(pass_.collision, false, p, [&](Matrix3X& q) { projectCollisionSweep(contacts_, w, scene_.solver.thickness, q, threads_); });
     if (uses_.selfCollision)
         constraintPass(pass_.self, true, p, [&](Matrix3X& q) {
-            projectSelfCollisionSweep(selfPairs_, P_.x, w, scene_.self_collision.friction, q);  // exercises 7.5, 7.6
+            projectSelfCollisionSweep(selfPairs_, scene_.self_collision.thickness, P_.x, w, scene_.self_collision.friction, q);  // exercises 7.5, 7.6
         });
     firstIteration_ = false;
 }

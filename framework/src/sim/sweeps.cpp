@@ -60,11 +60,12 @@ void forEachGroupShare(const std::vector<int>& groups, int threads, int minParal
 int sweepThreads(int requested) { return requested > 0 ? requested : defaultThreads(); }
 
 // The six sweeps are weak symbols: a program that links its own definition uses that one. Only the
-// grader's test process does (framework/app/grade/remote/sweeps_NN.cpp: it sends a whole sweep to the
-// submission's process instead of one call per constraint).
-#define CLOTHLAB_REPLACEABLE [[gnu::weak]]
+// grader's test process does, when stage NN is the submission's: its proxies, generated from these
+// definitions (framework/grading/wire/make_proxies.cpp), send a whole sweep to the submission process
+// instead of one call per constraint.
+#define CLOTHLAB_REPLACEABLE(stage) [[gnu::weak]]
 
-CLOTHLAB_REPLACEABLE
+CLOTHLAB_REPLACEABLE(04)
 void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX& w, double k, Matrix3X& p,
                           const SweepPlan& plan) {
     forEachConstraint(links.size(), plan, [&](int n) {
@@ -75,7 +76,7 @@ void projectDistanceSweep(const std::vector<DistanceLink>& links, const VectorX&
     });
 }
 
-CLOTHLAB_REPLACEABLE
+CLOTHLAB_REPLACEABLE(05)
 void projectBendingSweep(const std::vector<BendingStencil>& stencils, const VectorX& w, double k, Matrix3X& p,
                          const SweepPlan& plan) {
     forEachConstraint(stencils.size(), plan, [&](int n) {
@@ -86,7 +87,7 @@ void projectBendingSweep(const std::vector<BendingStencil>& stencils, const Vect
     });
 }
 
-CLOTHLAB_REPLACEABLE
+CLOTHLAB_REPLACEABLE(04)
 void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const VectorX& w, double alphaTilde,
                               std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
     forEachConstraint(links.size(), plan, [&](int n) {
@@ -98,7 +99,7 @@ void projectDistanceSweepXpbd(const std::vector<DistanceLink>& links, const Vect
     });
 }
 
-CLOTHLAB_REPLACEABLE
+CLOTHLAB_REPLACEABLE(05)
 void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const VectorX& w, double alphaTilde,
                              std::vector<double>& lambda, Matrix3X& p, const SweepPlan& plan) {
     forEachConstraint(stencils.size(), plan, [&](int n) {
@@ -109,7 +110,7 @@ void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const 
     });
 }
 
-CLOTHLAB_REPLACEABLE
+CLOTHLAB_REPLACEABLE(06)
 void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p,
                            int threads) {
     // Runs of contacts of one particle: run r is contacts start[r] .. start[r+1] − 1.
@@ -131,13 +132,13 @@ void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, con
     });
 }
 
-CLOTHLAB_REPLACEABLE
-void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,
-                               Matrix3X& p) {
-    for (const DistanceLink& L : pairs) {
-        const double depth = L.d - (p.col(L.i) - p.col(L.j)).norm();
+CLOTHLAB_REPLACEABLE(07)
+void projectSelfCollisionSweep(const std::vector<ParticlePair>& pairs, double h, const Matrix3X& x, const VectorX& w,
+                               double mu, Matrix3X& p) {
+    for (const ParticlePair& L : pairs) {
+        const double depth = h - (p.col(L.i) - p.col(L.j)).norm();
         if (depth <= 0.0) continue;
-        const PairCorrection c = projectSeparation(p.col(L.i), p.col(L.j), w[L.i], w[L.j], L.d);
+        const PairCorrection c = projectSeparation(p.col(L.i), p.col(L.j), w[L.i], w[L.j], h);
         p.col(L.i) += c.dpi;
         p.col(L.j) += c.dpj;
         if (mu <= 0.0) continue;

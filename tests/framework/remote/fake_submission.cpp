@@ -17,6 +17,7 @@
 #include "clothlab/exercise/06_collision.h"
 #include "clothlab/exercise/07_self_collision.h"
 #include "clothlab/sim/sweeps.h"
+#include "clothlab/sim/team.h"
 
 namespace clothlab {
 
@@ -147,9 +148,9 @@ PairCorrection layerFriction(const Vec3&, const Vec3&, const Vec3&, const Vec3&,
 }
 
 /// The framework's distance sweep, replaced here too (sim/sweeps.cpp defines it weak): every position
-/// becomes 42 when the sweep arrives whole and serial (remote_test.cpp ASweepCrossesWhole).
+/// becomes 42 when the sweep arrives whole and runs serially here (remote_test.cpp ASweepCrossesWhole).
 void projectDistanceSweep(const std::vector<DistanceLink>&, const VectorX&, double, Matrix3X& p, const SweepPlan& plan) {
-    p.setConstant(plan.threads == 1 ? 42.0 : -1.0);
+    p.setConstant(teamThreads(plan.threads) == 1 ? 42.0 : -1.0);
 }
 
 }  // namespace clothlab

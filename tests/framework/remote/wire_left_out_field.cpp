@@ -1,6 +1,6 @@
 // Must not compile (test grade.wire_refuses_a_left_out_field): CLOTHLAB_WIRE lists two of the three
 // fields of Probe, so the third would silently not cross between the two processes.
-#include "remote/wire.h"
+#include "wire/wire.h"
 
 namespace probe {
 struct Probe {

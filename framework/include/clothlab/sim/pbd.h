@@ -100,7 +100,7 @@ private:
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step
     double kDistance_ = 1.0, kBending_ = 1.0;    ///< per-iteration PBD stiffness k'
     Matrix3X rest_;                              ///< rest positions X (self-collision: which pairs are neighbours)
-    std::vector<DistanceLink> selfPairs_;        ///< self-collision pairs of the current step, d = h
+    std::vector<ParticlePair> selfPairs_;        ///< self-collision pairs of the current step (separation distance h)
     bool firstIteration_ = false;                ///< the next projectConstraints() is a step's first
     Matrix3X before_;                            ///< p before a pass (checkMomentum)
     /// What the scene uses; nothing else runs or is timed (a scene names only what it needs).

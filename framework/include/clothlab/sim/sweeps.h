@@ -126,16 +126,17 @@ void projectBendingSweepXpbd(const std::vector<BendingStencil>& stencils, const 
 void projectCollisionSweep(const std::vector<CollisionConstraint>& contacts, const VectorX& w, double h, Matrix3X& p,
                            int threads = 1);
 
-/// Self-collision sweep: for every pair (i, j) with separation distance d (a DistanceLink read as the
-/// inequality |p_i − p_j| ≥ d): the separation of projectSeparation() (exercise 7.5), then, with μ > 0,
-/// the friction between the layers of layerFriction() (exercise 7.6) with the depth δ = d − |p_i − p_j|
-/// the separation removed.
-/// @param pairs  the pairs found at line (8) in this step, with d = h (pairs closer than h at rest left out)
+/// Self-collision sweep: for every pair (i, j) of findNeighbourPairs() (exercise 7.4), read as the
+/// inequality |p_i − p_j| ≥ h: the separation of projectSeparation() (exercise 7.5) to the distance h,
+/// then, with μ > 0, the friction between the layers of layerFriction() (exercise 7.6) with the depth
+/// δ = h − |p_i − p_j| the separation removed.
+/// @param pairs  the pairs found at line (8) in this step (pairs closer than h at rest left out)
+/// @param h      self-collision thickness h, m: the separation distance of every pair
 /// @param x      positions at the start of the step, 3 x N, m
 /// @param w      inverse masses, length N, 1/kg
 /// @param mu     friction coefficient μ ≥ 0 between the layers
 /// @param p      predicted positions, 3 x N, m (updated in place)
-void projectSelfCollisionSweep(const std::vector<DistanceLink>& pairs, const Matrix3X& x, const VectorX& w, double mu,
-                               Matrix3X& p);
+void projectSelfCollisionSweep(const std::vector<ParticlePair>& pairs, double h, const Matrix3X& x, const VectorX& w,
+                               double mu, Matrix3X& p);
 
 }  // namespace clothlab

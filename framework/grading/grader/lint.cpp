@@ -1,4 +1,4 @@
-#include "screen.h"
+#include "lint.h"
 
 #include <map>
 
@@ -26,7 +26,7 @@ bool identChar(char c) { return identStart(c) || std::isdigit(static_cast<unsign
 
 }  // namespace
 
-std::vector<Finding> screenSource(const std::string& text, const std::string& display) {
+std::vector<Finding> lintSource(const std::string& text, const std::string& display) {
     std::vector<Finding> found;
     const auto report = [&](int line, const std::string& what) {
         const std::string where = display + ":" + std::to_string(line);

@@ -1,14 +1,10 @@
 // Grading one submission: find its stage folders, lint, compile (sandboxed), link each stage's
-// graded tests, run every test in its own sandboxed process and read the verdict from the channel.
+// two programs, run every test in its own sandboxed process and read the verdict from the channel.
 #pragma once
-#include <filesystem>
 #include <map>
 #include <set>
-#include <string>
-#include <vector>
 
 #include "common.h"
-#include "screen.h"
 
 namespace grade {
 
@@ -17,10 +13,10 @@ struct KitStage {
     std::string stage;  ///< "01"
     std::string dir;    ///< "01_hooke"
     std::vector<fs::path> tests, reference, stub;  ///< object files: graded tests, solutions/ (may be empty), stub
-    std::vector<fs::path> proxy;  ///< the stage's functions as calls into the submission process (remote/)
+    std::vector<fs::path> proxy;  ///< the stage's functions as calls into the submission process (wire/make_proxies.cpp)
 };
 
-/// The grading kit: what CMake built (kit.json in the build tree, written by cmake/grade_kit.cmake).
+/// The grading kit: what CMake built (build/grade-kit/kit.json, written by cmake/grade_kit.cmake).
 struct Kit {
     fs::path file;
     std::string compiler;
@@ -30,8 +26,8 @@ struct Kit {
     std::vector<fs::path> system_includes;
     std::vector<fs::path> main_objects, libs;
     std::vector<std::string> link_flags;
-    std::vector<fs::path> client_objects;     ///< the test process's side of the submission process (remote/)
-    std::vector<fs::path> server_objects;     ///< main() of the submission process and its side of the wire
+    std::vector<fs::path> client_objects;  ///< the test process's side of the submission process (test_process/, wire/)
+    std::vector<fs::path> server_objects;  ///< main() of the submission process and its side of the wire
     std::vector<std::string> server_link_flags;
     fs::path points_dir;
     std::vector<KitStage> stages;
@@ -59,31 +55,32 @@ struct GradeOptions {
 /// Grades the submission in `root`. Throws std::runtime_error when its layout cannot be read.
 std::vector<StageResult> gradeSubmission(const Kit& kit, const fs::path& root, const GradeOptions& options);
 
-/// Runs the tests of a graded binary built elsewhere (the suite's self-checks): every test of the
-/// points file, each in its own (sandboxed) process; `answers`: the answers.json its experiments read
-/// (empty: none).
+/// One graded stage, ready to run: its test program, the submission process's program ("" none:
+/// the self-checks) and the folder with the answers its experiments read.
+struct StageRun {
+    std::string stage;
+    fs::path exe, server, answers;
+};
+
+/// Runs the tests of every stage in one queue (run.cpp): the stages in order, each stage's tests in its
+/// points file's order, `jobs` processes at a time, worker w pinned to usable CPU first_cpu + w, so a
+/// worker done with one stage goes on with the next. After two timeouts in a stage, its remaining
+/// tests are not run.
+std::vector<StageResult> runStages(const fs::path& points_dir, const std::vector<StageRun>& stages, int timeout_s, int jobs,
+                                   int first_cpu, const fs::path& logs);
+
+/// Usable CPU number `index` of this grader (counted modulo their number), or -1 (any) when the
+/// grader cannot read its affinity.
+int usableCpu(int index);
+
+/// A folder holding a copy of the answers file (the graded experiments' numbers), or an empty folder
+/// when there is none: only a regular file of at most 64 KiB is copied, never a link.
+fs::path answersFolder(const fs::path& file, const fs::path& folder);
+
+/// Runs the tests of a graded binary built elsewhere (the suite's self-checks, clothlab-grade --binary):
+/// every test of the points file, each in its own (sandboxed) process; `answers`: the answers.json its
+/// experiments read (empty: none). The binary's tests and the points file must name the same tests.
 StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& answers,
                         int timeout_seconds, int jobs, const fs::path& tmp);
 
-/// Runs fn(0..count-1) on `jobs` threads (fn(i, worker) when fn takes the worker's number too).
-template <class Fn>
-void parallelFor(int count, int jobs, Fn fn);
-
 }  // namespace grade
-
-#include <atomic>
-#include <thread>
-#include <type_traits>
-template <class Fn>
-void grade::parallelFor(int count, int jobs, Fn fn) {
-    std::atomic<int> next{0};
-    std::vector<std::thread> pool;
-    for (int t = 0; t < std::max(1, std::min(jobs, count)); ++t)
-        pool.emplace_back([&, t] {
-            for (int i; (i = next++) < count;) {
-                if constexpr (std::is_invocable_v<Fn, int, int>) fn(i, t);
-                else fn(i);
-            }
-        });
-    for (auto& th : pool) th.join();
-}

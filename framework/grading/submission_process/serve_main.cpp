@@ -1,23 +1,28 @@
-// The submission process: the main() linked with the submission's objects (see remote/peer.h).
+// The submission process: the main() linked with the submission's objects (see wire/peer.h).
 //
 // Started by a graded test process with the calls arriving on fd 3 and the replies leaving on
 // fd 4. Before it serves the first call it confines itself with a seccomp filter (libseccomp):
 // reading and writing the descriptors it has, memory, time and ending itself are allowed; every
 // other system call (opening files, starting processes or threads, signalling others, tracing)
-// fails with EPERM. It cannot reach the test process's memory or its report channel.
+// fails with EPERM. It cannot reach the test process's memory or its report channel. Its parallel
+// loops run on one thread (the sweeps give the same positions bit for bit either way).
 #include <seccomp.h>
 #include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cstdio>
 
-#include "remote/functions.h"
-#include "remote/peer.h"
+#include "clothlab/sim/team.h"
+#include "functions.h"  // generated: CLOTHLAB_REMOTE_FUNCTIONS
+#include "wire/peer.h"
 
 namespace {
 
 /// Allows only the system calls a computation needs; false if the filter could not be loaded.
 bool confine() {
+#ifdef CLOTHLAB_TEST_NO_SECCOMP  // the red team's test-only build of this file (tests/sandbox/CMakeLists.txt) loads none
+    return true;
+#endif
     scmp_filter_ctx ctx = seccomp_init(SCMP_ACT_ERRNO(EPERM));
     if (!ctx) return false;
     const int allowed[] = {
@@ -48,8 +53,9 @@ int main() {
         std::fprintf(stderr, "clothlab-submission: cannot load the seccomp filter\n");
         return 125;
     }
+    const TeamCap serial(1);  // the filter allows no new thread
     remote::Peer peer(3, 4);
-#define CLOTHLAB_SERVE(id, name)                                                                                    \
+#define CLOTHLAB_SERVE(id, name) \
     peer.addFunction(id, [](const remote::json& in) { return remote::Invoke<decltype(name)>::serve(name, in); });
     CLOTHLAB_REMOTE_FUNCTIONS(CLOTHLAB_SERVE)
 #undef CLOTHLAB_SERVE

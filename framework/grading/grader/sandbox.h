@@ -1,21 +1,19 @@
-// Running untrusted programs (a submission's compiler run, its linked test binary) confined.
-//
-// Two confinements (docs/grading.md, "Two confinements"), chosen once by the CLI:
+// Running untrusted programs (a submission's compiler run, its test and submission processes)
+// confined, in one of two ways chosen once per grading (docs/grading.md, "Two confinements"):
 //
 //  - bubblewrap (bwrap, Debian package `bubblewrap`): new PID, network, IPC, UTS and cgroup namespaces
 //    (and a user namespace when the grader is not root), no capabilities, as user `nobody` when the
-//    grader runs as root, no network, a fresh /tmp and only the paths in `mounts` (plus /usr,
-//    read-only). A wall-clock timeout kills the whole sandbox (its PID namespace dies with it).
+//    grader runs as root, a fresh /tmp and only the paths in `mounts` (plus /usr, read-only). A
+//    wall-clock timeout kills the whole sandbox (its PID namespace dies with it).
 //  - container mode, where no namespace can be made (Docker's default confinement: Gradescope,
 //    PrairieLearn) and the grader is root: each program runs as a user and group of its own (one per
-//    run at a time, never shared, no supplementary groups), with no_new_privs, Landlock rules where the
-//    kernel has them (read and execute /usr and the run's read-only paths, write only its writable
-//    paths and its own scratch folder, which is also its HOME and TMPDIR), and a seccomp filter (no
-//    sockets, no ptrace or process_vm_*, no new namespaces or mounts, no io_uring, no System V IPC).
-//    The programs see the host's paths: a path of `mounts` in the arguments and environment becomes
-//    the mount's host path. When the run ends (or times out) every process of its user is killed, what
-//    it wrote in its writable paths is handed to root, and whatever it left in /tmp, /var/tmp and
-//    /dev/shm is removed.
+//    run at a time, no supplementary groups), with no_new_privs, Landlock rules where the kernel has
+//    them (read /usr and the run's read-only paths, write its writable paths and its own scratch
+//    folder, also its HOME and TMPDIR), and a seccomp filter (no sockets, ptrace, new namespaces,
+//    mounts, io_uring or System V IPC). The programs see the host's paths: a path of `mounts` in the
+//    arguments and environment becomes the mount's host path. When the run ends every process of its
+//    user is killed, what it wrote in its writable paths is handed to root, and what it left in /tmp,
+//    /var/tmp and /dev/shm is removed.
 //
 // Both apply the limits (setrlimit): CPU seconds, address space, file size, open files, processes.
 #pragma once
@@ -60,9 +58,16 @@ struct RunOutcome {
     std::string report;   ///< what the program wrote to fd 3 (channel)
 };
 
+/// Runs the program; never throws for the program's own failure (see RunOutcome).
+RunOutcome runSandboxed(const SandboxRun& run);
+
+/// Makes a folder the confined user may write: owned by nobody when bubblewrap runs as root (container
+/// mode hands it to each run's user while that run lasts).
+void makeWritableForSandbox(const fs::path& dir);
+
 enum class Confinement { none, bubblewrap, container };
 
-/// How programs run: set once, by the CLI (default bubblewrap). `none` still applies the limits.
+/// How programs run: set once by the CLI (default bubblewrap). `none` still applies the limits.
 void setConfinement(Confinement c);
 Confinement confinement();
 /// "bubblewrap", "container mode (...what it lacks...)" or "none (...)": for the reports.
@@ -71,42 +76,29 @@ std::string confinementName();
 /// Empty when bwrap can make its sandbox here, else why not (one line).
 std::string bubblewrapProblem();
 
-/// Whether the kernel lets this process use Landlock (and which ABI version; 0: no).
-int landlockAbi();
-
-/// What a submission's programs must not touch, given to the container mode's probe.
+/// What a submission's programs must not touch, checked by container mode's probe.
 struct Protected {
     std::vector<fs::path> unreadable;  ///< files a program must fail to open for reading
-    std::vector<fs::path> unwritable;  ///< files a program must fail to open for writing, folders it must fail to create a file in
+    std::vector<fs::path> unwritable;  ///< files it must fail to open for writing, folders it must fail to create a file in
     std::vector<fs::path> needed;      ///< paths the programs read (the kit, the work folder): every folder above must let others pass
     bool students_apart = false;       ///< several students' submissions at once (--class): needs Landlock in container mode
 };
 
-/// The instructor's files under `tree` (the folder holding the points files' tests/): every file of
-/// solutions/ and tests/instructor/, the points files, and `reference` (objects built from solutions/:
-/// protected only when the tree has solutions/; the student copy's reference objects are the students'
-/// own files). Unwritable: the tree itself, the points files, and `unwritable`.
+/// The instructor's files under `tree` (the folder holding the points files' tests/): unreadable, every
+/// file of solutions/ and tests/instructor/, the points files, and `reference` (objects built from
+/// solutions/: only when the tree has solutions/; the student copy's are the students' own files);
+/// unwritable, the tree, the points files and `unwritable`.
 Protected instructorFiles(const fs::path& tree, const std::vector<fs::path>& reference, const std::vector<fs::path>& unwritable);
 
-/// Empty when container mode holds here: the grader is root, every folder above `p.needed` lets other
-/// users pass, and a probe process confined as a test fails to read every `p.unreadable`, to write every `p.unwritable`, to open an AF_INET socket and
-/// to signal the grader. Else the first guarantee that does not hold, as one line.
-std::string containerProblem(const Protected& p);
-
 /// Sets the confinement `wanted`: "auto" (bubblewrap where it works, else container mode),
-/// "bubblewrap" or "container" (container mode is probed first, containerProblem). Returns "" when
-/// it holds here, else why not (one line; the confinement is then `none`).
+/// "bubblewrap" or "container". Container mode holds when the grader is root, every folder above
+/// `p.needed` lets other users pass, and a probe confined as a test fails to read every `p.unreadable`,
+/// to write every `p.unwritable`, to open an AF_INET socket and to signal the grader. Returns "" when
+/// the confinement holds, else why not (one line; the confinement is then `none`).
 std::string chooseConfinement(const std::string& wanted, const Protected& p);
 
 /// The probe's main(): `clothlab-grade --container-probe [r FILE | w PATH]...` prints one line per
-/// guarantee that does not hold and exits 1 if there is one (run only by containerProblem).
+/// guarantee that does not hold and exits 1 if there is one (run only by chooseConfinement).
 int containerProbeMain(int argc, char** argv);
-
-/// Runs the program; never throws for the program's own failure (see RunOutcome).
-RunOutcome runSandboxed(const SandboxRun& run);
-
-/// Makes a folder the confined user may write: owned by nobody when bubblewrap runs as root (container
-/// mode hands it to each run's user while that run lasts).
-void makeWritableForSandbox(const fs::path& dir);
 
 }  // namespace grade

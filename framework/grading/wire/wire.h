@@ -1,4 +1,4 @@
-// The values that cross between a graded test process and the submission process (remote/peer.h),
+// The values that cross between a graded test process and the submission process (wire/peer.h),
 // as nlohmann::json in its binary form CBOR: a call's arguments are one JSON array, its results
 // another. Each struct that crosses is declared once below with CLOTHLAB_WIRE; the structured
 // binding in that macro does not compile when the list leaves a field of the struct out.
@@ -150,7 +150,7 @@ template <class T> constexpr bool isFlat() {
     else return false;
 }
 
-/// Registers f as a callback of the current call (remote/peer.h): its id, 0 for an empty function.
+/// Registers f as a callback of the current call (wire/peer.h): its id, 0 for an empty function.
 template <class R, class... P> uint32_t callbackId(const std::function<R(P...)>& f);
 /// Makes f call the other side's callback `id` through the current call's peer (none for id 0).
 template <class R, class... P> void callbackOf(uint32_t id, std::function<R(P...)>& f);

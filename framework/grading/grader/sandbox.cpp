@@ -5,7 +5,6 @@
 #include <linux/landlock.h>
 #include <linux/seccomp.h>
 #include <poll.h>
-#include <pwd.h>
 #include <sched.h>
 #include <seccomp.h>
 #include <signal.h>
@@ -18,13 +17,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <initializer_list>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -49,65 +44,73 @@ namespace {
 Confinement g_confinement = Confinement::bubblewrap;
 constexpr uid_t kNobody = 65534;
 
-// A defence of container mode switched off, to show that an attack gets through without it: only in
-// the test tool clothlab-grade-weakened (tests/sandbox/), built with CLOTHLAB_SANDBOX_TEST_SWITCHES;
-// CLOTHLAB_WEAKEN names the defences (landlock, seccomp, uid). Never compiled into clothlab-grade.
-#ifdef CLOTHLAB_SANDBOX_TEST_SWITCHES
-bool weakened(const char* defence) {
-    const char* w = std::getenv("CLOTHLAB_WEAKEN");
-    return w && std::strstr(w, defence);
+/// Calls fn(path, stat) for each entry of `dir` (or of its whole tree), never following a link.
+template <class Fn> void forEachEntry(const fs::path& dir, bool recursive, Fn fn) {
+    std::error_code ec;
+    const auto visit = [&](const fs::path& p) {
+        struct stat st {};
+        if (::lstat(p.c_str(), &st) == 0) fn(p, st);
+    };
+    if (!recursive)
+        for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) visit(it->path());
+    else
+        for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec))
+            visit(it->path());
 }
-#else
-constexpr bool weakened(const char*) { return false; }
-#endif
 
 /// Processes the user `uid` has now (RLIMIT_NPROC counts them all, so the limit is this + allowance).
 int processesOf(uid_t uid) {
     int n = 0;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator("/proc", ec)) {
-        struct stat st {};
-        const std::string name = e.path().filename().string();
-        if (name.find_first_not_of("0123456789") == std::string::npos && ::stat(e.path().c_str(), &st) == 0 && st.st_uid == uid) ++n;
-    }
+    forEachEntry("/proc", false, [&](const fs::path& p, const struct stat& st) {
+        n += p.filename().string().find_first_not_of("0123456789") == std::string::npos && st.st_uid == uid;
+    });
     return n;
 }
 
+/// Outside bubblewrap's mounts the program sees the host's paths: a path inside a mount (at the start
+/// of an argument, after the '=' of --NAME=, or after -I) becomes the mount's host path.
+std::string outside(const std::string& arg, const std::vector<Mount>& mounts) {
+    const size_t at = arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos ? arg.find('=') + 1 : arg.rfind("-I", 0) == 0 ? 2 : 0;
+    for (const auto& m : mounts) {
+        const std::string in = m.inside.string();
+        if (arg.compare(at, in.size(), in) == 0 && (arg.size() == at + in.size() || arg[at + in.size()] == '/'))
+            return arg.substr(0, at) + m.host.string() + arg.substr(at + in.size());
+    }
+    return arg;
+}
+
 /// The bwrap command line. Run by an ordinary user, bwrap makes a user namespace and drops every
-/// capability. Run by root, bwrap keeps root (so it can reach paths only root may traverse) but
-/// the program itself starts through setpriv as user nobody, with no capabilities and no way to
-/// gain any: then the process limit counts nobody's processes (root is exempt from it).
+/// capability. Run by root, bwrap keeps root (so it can reach paths only root may traverse) but the
+/// program itself starts through setpriv as user nobody, with no capabilities and no way to gain any:
+/// then the process limit counts nobody's processes (root is exempt from it).
 std::vector<std::string> bwrapArgs(const SandboxRun& run) {
-    const bool root = ::geteuid() == 0;
+    const bool root = ::geteuid() == 0, host = weakened("view");  // test tool only: the host's files, as far as nobody may go
+    const auto path = [&](const std::string& p) { return host ? outside(p, run.mounts) : p; };
     std::vector<std::string> a = {"bwrap", "--die-with-parent", "--new-session", "--hostname", "grader", "--clearenv",
                                   "--setenv", "PATH", "/usr/bin", "--setenv", "HOME", "/tmp", "--ro-bind", "/usr", "/usr"};
-    for (const auto& [name, value] : run.env) a.insert(a.end(), {"--setenv", name, value});
+    for (const auto& [name, value] : run.env) a.insert(a.end(), {"--setenv", name, path(value)});
     if (root) a.insert(a.begin() + 1, {"--unshare-ipc", "--unshare-pid", "--unshare-net", "--unshare-uts", "--unshare-cgroup-try"});
     else a.insert(a.begin() + 1, {"--unshare-all", "--cap-drop", "ALL"});
-    for (const char* l : {"lib", "lib64", "bin", "sbin"})
-        if (fs::is_symlink(std::string("/") + l)) a.insert(a.end(), {"--symlink", fs::read_symlink(std::string("/") + l).string(), std::string("/") + l});
-        else if (fs::exists(std::string("/") + l)) a.insert(a.end(), {"--ro-bind", std::string("/") + l, std::string("/") + l});
-    if (fs::exists("/etc/ld.so.cache")) a.insert(a.end(), {"--ro-bind", "/etc/ld.so.cache", "/etc/ld.so.cache"});
-    a.insert(a.end(), {"--dev", "/dev", "--perms", "1777", "--size", std::to_string(run.limits.file_size * 2), "--tmpfs", "/tmp"});
-    // The folders the mounts sit in, world-readable (bwrap would make them for root alone).
-    std::set<std::string> parents;
+    if (host) a.insert(a.end(), {"--ro-bind", "/", "/", "--dev", "/dev", "--bind", "/tmp", "/tmp", "--bind", "/var/tmp", "/var/tmp"});
+    for (const std::string l : {"/lib", "/lib64", "/bin", "/sbin"})
+        if (host) break;
+        else if (fs::is_symlink(l)) a.insert(a.end(), {"--symlink", fs::read_symlink(l).string(), l});
+        else if (fs::exists(l)) a.insert(a.end(), {"--ro-bind", l, l});
+    if (!host && fs::exists("/etc/ld.so.cache")) a.insert(a.end(), {"--ro-bind", "/etc/ld.so.cache", "/etc/ld.so.cache"});
+    if (!host) a.insert(a.end(), {"--dev", "/dev", "--perms", "1777", "--size", std::to_string(run.limits.file_size * 2), "--tmpfs", "/tmp"});
+    std::set<std::string> parents;  // the folders the mounts sit in, world-readable (bwrap would make them for root alone)
     for (const auto& m : run.mounts)
-        for (fs::path p = m.inside.parent_path(); p != p.root_path() && !p.empty(); p = p.parent_path()) parents.insert(p.string());
+        for (fs::path p = m.inside.parent_path(); !host && p != p.root_path() && !p.empty(); p = p.parent_path()) parents.insert(p.string());
     for (const auto& p : parents)  // sorted: a parent before its children
         if (p != "/usr" && p.rfind("/usr/", 0) != 0 && p != "/tmp") a.insert(a.end(), {"--perms", "0755", "--dir", p});
     for (const auto& m : run.mounts)
-        a.insert(a.end(), {m.writable ? "--bind" : "--ro-bind", m.host.string(), m.inside.string()});
-    a.insert(a.end(), {"--chdir", run.workdir.string(), "--"});
+        if (!host || m.writable) a.insert(a.end(), {m.writable ? "--bind" : "--ro-bind", m.host.string(), path(m.inside.string())});
+    a.insert(a.end(), {"--chdir", path(run.workdir.string()), "--"});
     if (root)
-        a.insert(a.end(), {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "--no-new-privs",
-                           "--inh-caps=-all", "--bounding-set=-all", "--"});
-    a.insert(a.end(), run.argv.begin(), run.argv.end());
+        a.insert(a.end(), {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "--no-new-privs", "--inh-caps=-all",
+                           "--bounding-set=-all", "--"});
+    for (const auto& arg : run.argv) a.push_back(path(arg));
     return a;
-}
-
-void setLimit(int resource, rlim_t value) {
-    const struct rlimit r {value, value};
-    ::setrlimit(resource, &r);
 }
 
 // ---- container mode ----------------------------------------------------------------------------
@@ -119,21 +122,6 @@ const fs::path kSandboxDir = "/tmp/clothlab-sandbox";
 /// ids (60000-64999, below nobody), inside the 65536 ids a user-namespaced Docker maps.
 constexpr uid_t kFirstUid = 64200;
 constexpr int kUsers = 512;
-
-/// Where a run may have left files of its own: the world-writable folders (and our scratch folders).
-const char* const kLeftoverDirs[] = {"/tmp", "/var/tmp", "/dev/shm", "/tmp/clothlab-sandbox"};
-
-void checkSandboxDir() {
-    static std::once_flag once;
-    std::call_once(once, [] {
-        ::mkdir(kSandboxDir.c_str(), 0711);
-        struct stat st {};
-        if (::lstat(kSandboxDir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != 0 || (st.st_mode & 07777) != 0711) {
-            // Not ours (made by someone else, or a link): never use it.
-            die(kSandboxDir.string() + ": (folder): must be root's own folder with mode 0711 (container mode); remove it and grade again");
-        }
-    });
-}
 
 /// The real and saved user of the child that kills the processes of run user `uid`: an id of its own
 /// (never a run's, never root), kUsers above the runs' ids.
@@ -149,42 +137,33 @@ void killAllOf(uid_t uid) {
     if (uid == 0 || killer == 0) die("container mode: refusing to kill the processes of root");
     const pid_t pid = ::fork();
     if (pid == 0) {
-        if (::syscall(SYS_setresuid, killer, uid, killer) != 0) ::_exit(1);
-        if (::getuid() != killer || ::geteuid() != uid || ::getuid() == 0) ::_exit(1);
-        for (int round = 0; round < 3; ++round) {  // kill(-1) spares only the caller (and init)
-            if (::kill(-1, SIGKILL) != 0) break;     // ESRCH: nobody left
-            const struct timespec ms {0, 1000000};
-            ::nanosleep(&ms, nullptr);
-        }
+        if (::syscall(SYS_setresuid, killer, uid, killer) != 0 || ::getuid() != killer || ::geteuid() != uid || ::getuid() == 0) ::_exit(1);
+        const struct timespec ms {0, 1000000};
+        for (int round = 0; round < 3 && ::kill(-1, SIGKILL) == 0; ++round) ::nanosleep(&ms, nullptr);  // ESRCH: nobody left
         ::_exit(0);
     }
     if (pid > 0) ::waitpid(pid, nullptr, 0);
 }
 
-/// Removes what `uid` owns at the top of the leftover folders (removal never follows a link).
+/// Removes what `uid` owns at the top of the world-writable folders and of kSandboxDir.
 void removeLeftovers(uid_t uid) {
-    for (const char* dir : kLeftoverDirs) {
-        std::error_code ec;
-        for (const auto& e : fs::directory_iterator(dir, ec)) {
-            struct stat st {};
-            if (::lstat(e.path().c_str(), &st) == 0 && st.st_uid == uid) fs::remove_all(e.path(), ec);
-        }
-    }
+    for (const char* dir : {"/tmp", "/var/tmp", "/dev/shm", "/tmp/clothlab-sandbox"})
+        forEachEntry(dir, false, [&](const fs::path& p, const struct stat& st) {
+            std::error_code ec;
+            if (st.st_uid == uid) fs::remove_all(p, ec);
+        });
 }
 
 /// Hands a folder a run wrote (and everything in it) to root, without group or world write permission
-/// and set-id bits: no later run (another user) can change what this one wrote. Never follows a link.
+/// and set-id bits: no later run (another user) can change what this one wrote.
 void handToRoot(const fs::path& dir) {
-    const auto seal = [](const fs::path& p) {
-        struct stat st {};
-        if (::lstat(p.c_str(), &st) != 0) return;
+    const auto seal = [](const fs::path& p, const struct stat& st) {
         if (::lchown(p.c_str(), 0, 0) != 0) die(p.string() + ": (file): cannot hand it back to root");
         if (!S_ISLNK(st.st_mode)) ::chmod(p.c_str(), st.st_mode & 0755);
     };
-    std::error_code ec;
-    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec))
-        seal(it->path());
-    seal(dir);
+    forEachEntry(dir, true, seal);
+    struct stat st {};
+    if (::lstat(dir.c_str(), &st) == 0) seal(dir, st);
 }
 
 /// The ids a run may use: not a user or group this machine names (/etc/passwd, /etc/group).
@@ -193,10 +172,9 @@ bool idIsFree(uid_t id) {
         std::set<unsigned> s;
         for (const char* file : {"/etc/passwd", "/etc/group"}) {
             std::ifstream in(file);
-            for (std::string line; std::getline(in, line);) {
-                const size_t a = line.find(':'), b = a == std::string::npos ? a : line.find(':', a + 1);
-                if (b != std::string::npos) s.insert(static_cast<unsigned>(std::strtoul(line.c_str() + b + 1, nullptr, 10)));
-            }
+            for (std::string line; std::getline(in, line);)
+                if (const size_t a = line.find(':'), b = a == std::string::npos ? a : line.find(':', a + 1); b != std::string::npos)
+                    s.insert(static_cast<unsigned>(std::strtoul(line.c_str() + b + 1, nullptr, 10)));
         }
         return s;
     }();
@@ -212,7 +190,13 @@ struct RunUser {
 };
 
 RunUser leaseUser() {
-    checkSandboxDir();
+    static std::once_flag once;
+    std::call_once(once, [] {
+        ::mkdir(kSandboxDir.c_str(), 0711);
+        struct stat st {};  // not ours (made by someone else, or a link): never use it
+        if (::lstat(kSandboxDir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != 0 || (st.st_mode & 07777) != 0711)
+            die(kSandboxDir.string() + ": (folder): must be root's own folder with mode 0711 (container mode); remove it and grade again");
+    });
     static std::atomic<unsigned> runs{0};
     RunUser u;
     const unsigned n = runs++;
@@ -240,68 +224,58 @@ RunUser leaseUser() {
 }
 
 /// Ends a run's hold on its user. No PID namespace dies with the run: every process of the user is
-/// killed first; then what it wrote in `mounts` becomes root's, before anything reads it; what it
-/// left elsewhere is removed.
+/// killed first; then what it wrote in `mounts` becomes root's, before anything reads it; what it left
+/// elsewhere is removed.
 void releaseUser(RunUser& u, const std::vector<Mount>& mounts) {
     if (u.lock >= 0) killAllOf(u.uid);
     for (const auto& m : mounts)
         if (m.writable) handToRoot(m.host);
-    if (u.lock >= 0) removeLeftovers(u.uid);
+    if (u.lock >= 0) removeLeftovers(u.uid), ::close(u.lock);  // unlocks
     std::error_code ec;
     fs::remove_all(u.scratch, ec);
-    if (u.lock >= 0) ::close(u.lock);  // unlocks
-    u.lock = -1;
 }
 
-/// The Landlock rights this kernel handles (its ABI version says which).
-uint64_t landlockHandled() {
-    const int abi = landlockAbi();
-    uint64_t h = (LANDLOCK_ACCESS_FS_MAKE_SYM << 1) - 1;  // ABI 1: execute ... make_sym
-    if (abi >= 2) h |= LANDLOCK_ACCESS_FS_REFER;
-    if (abi >= 3) h |= LANDLOCK_ACCESS_FS_TRUNCATE;
-    if (abi >= 5) h |= LANDLOCK_ACCESS_FS_IOCTL_DEV;
-    return h;
-}
-
-constexpr uint64_t kRead = LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR;
-constexpr uint64_t kExecute = LANDLOCK_ACCESS_FS_EXECUTE;
-constexpr uint64_t kWrite = LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV |
-                            LANDLOCK_ACCESS_FS_REMOVE_DIR | LANDLOCK_ACCESS_FS_REMOVE_FILE | LANDLOCK_ACCESS_FS_MAKE_DIR |
-                            LANDLOCK_ACCESS_FS_MAKE_REG | LANDLOCK_ACCESS_FS_MAKE_SYM | LANDLOCK_ACCESS_FS_MAKE_FIFO |
-                            LANDLOCK_ACCESS_FS_MAKE_SOCK | LANDLOCK_ACCESS_FS_REFER;
-/// The rights Landlock allows on a file (the others are about folders).
-constexpr uint64_t kFileRights = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_WRITE_FILE |
-                                 LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV;
-
-/// Allows `rights` on `path` (and below it, for a folder); a path that does not exist is left out.
-void allow(int ruleset, const fs::path& path, uint64_t rights) {
-    const int fd = ::open(path.c_str(), O_PATH | O_CLOEXEC);
-    if (fd < 0) return;
-    struct stat st {};
-    if (::fstat(fd, &st) == 0) {
-        struct landlock_path_beneath_attr rule {};
-        rule.allowed_access = rights & landlockHandled() & (S_ISDIR(st.st_mode) ? ~0ULL : kFileRights);
-        rule.parent_fd = fd;
-        if (::syscall(SYS_landlock_add_rule, ruleset, LANDLOCK_RULE_PATH_BENEATH, &rule, 0) != 0)
-            die(path.string() + ": (Landlock): cannot add the rule: " + std::strerror(errno));
-    }
-    ::close(fd);
+int landlockAbi() {
+    static const int abi = std::max(0L, ::syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION));
+    return abi;
 }
 
 /// The run's Landlock rules (-1: no Landlock here): read and execute the system's programs and
 /// libraries and the read-only mounts, read and write the writable mounts and the scratch folder.
 int landlockRules(const SandboxRun& run, const fs::path& scratch) {
     if (landlockAbi() == 0 || weakened("landlock")) return -1;
+    const int abi = landlockAbi();
+    const uint64_t handled = ((LANDLOCK_ACCESS_FS_MAKE_SYM << 1) - 1) | (abi >= 2 ? LANDLOCK_ACCESS_FS_REFER : 0) |
+                             (abi >= 3 ? LANDLOCK_ACCESS_FS_TRUNCATE : 0) | (abi >= 5 ? LANDLOCK_ACCESS_FS_IOCTL_DEV : 0);
+    constexpr uint64_t read = LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR, execute = LANDLOCK_ACCESS_FS_EXECUTE;
+    constexpr uint64_t write = LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV |
+                               LANDLOCK_ACCESS_FS_REMOVE_DIR | LANDLOCK_ACCESS_FS_REMOVE_FILE | LANDLOCK_ACCESS_FS_MAKE_DIR |
+                               LANDLOCK_ACCESS_FS_MAKE_REG | LANDLOCK_ACCESS_FS_MAKE_SYM | LANDLOCK_ACCESS_FS_MAKE_FIFO |
+                               LANDLOCK_ACCESS_FS_MAKE_SOCK | LANDLOCK_ACCESS_FS_REFER;
+    constexpr uint64_t fileRights = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_WRITE_FILE |
+                                    LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV;  // the others are about folders
     struct landlock_ruleset_attr attr {};
-    attr.handled_access_fs = landlockHandled();
+    attr.handled_access_fs = handled;
     const int ruleset = static_cast<int>(::syscall(SYS_landlock_create_ruleset, &attr, sizeof attr, 0));
     if (ruleset < 0) die(std::string("container mode: cannot make a Landlock ruleset: ") + std::strerror(errno));
-    for (const char* sys : {"/usr", "/lib", "/lib32", "/lib64", "/libx32", "/bin", "/sbin", "/etc/ld.so.cache"})
-        allow(ruleset, sys, kRead | kExecute);
-    allow(ruleset, "/dev/null", kRead | kWrite);
-    for (const char* dev : {"/dev/zero", "/dev/random", "/dev/urandom"}) allow(ruleset, dev, kRead);
-    for (const auto& m : run.mounts) allow(ruleset, m.host, m.writable ? kRead | kWrite : kRead | kExecute);
-    allow(ruleset, scratch, kRead | kWrite);
+    const auto allow = [&](const fs::path& path, uint64_t rights) {  // a path that does not exist is left out
+        const int fd = ::open(path.c_str(), O_PATH | O_CLOEXEC);
+        struct stat st {};
+        if (fd < 0) return;
+        if (::fstat(fd, &st) == 0) {
+            struct landlock_path_beneath_attr rule {};
+            rule.allowed_access = rights & handled & (S_ISDIR(st.st_mode) ? ~0ULL : fileRights);
+            rule.parent_fd = fd;
+            if (::syscall(SYS_landlock_add_rule, ruleset, LANDLOCK_RULE_PATH_BENEATH, &rule, 0) != 0)
+                die(path.string() + ": (Landlock): cannot add the rule: " + std::strerror(errno));
+        }
+        ::close(fd);
+    };
+    for (const char* sys : {"/usr", "/lib", "/lib32", "/lib64", "/libx32", "/bin", "/sbin", "/etc/ld.so.cache"}) allow(sys, read | execute);
+    allow("/dev/null", read | write);
+    for (const char* dev : {"/dev/zero", "/dev/random", "/dev/urandom"}) allow(dev, read);
+    for (const auto& m : run.mounts) allow(m.host, m.writable ? read | write : read | execute);
+    allow(scratch, read | write);
     return ruleset;
 }
 
@@ -324,16 +298,13 @@ const struct sock_fprog* containerFilter() {
                         SCMP_SYS(fsopen), SCMP_SYS(fsconfig), SCMP_SYS(fsmount), SCMP_SYS(fspick), SCMP_SYS(mount_setattr),
                         SCMP_SYS(io_uring_setup), SCMP_SYS(io_uring_enter), SCMP_SYS(io_uring_register), SCMP_SYS(bpf),
                         SCMP_SYS(perf_event_open), SCMP_SYS(userfaultfd), SCMP_SYS(keyctl), SCMP_SYS(add_key),
-                        SCMP_SYS(request_key), SCMP_SYS(shmget), SCMP_SYS(shmat), SCMP_SYS(semget), SCMP_SYS(msgget),
-                        SCMP_SYS(mq_open)})
+                        SCMP_SYS(request_key), SCMP_SYS(shmget), SCMP_SYS(shmat), SCMP_SYS(semget), SCMP_SYS(msgget), SCMP_SYS(mq_open)})
             ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), sys, 0) == 0;
         for (scmp_datum_t flag : {CLONE_NEWNS, CLONE_NEWCGROUP, CLONE_NEWUTS, CLONE_NEWIPC, CLONE_NEWUSER, CLONE_NEWPID, CLONE_NEWNET})
             ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ERRNO(EPERM), SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, flag, flag)) == 0;
         ok = ok && seccomp_rule_add(ctx, SCMP_ACT_ERRNO(ENOSYS), SCMP_SYS(clone3), 0) == 0;
-        // The program as bytes: through a pipe (libseccomp 2.5 exports to a descriptor only).
-        int pipe_fds[2];
-        ok = ok && ::pipe2(pipe_fds, O_CLOEXEC) == 0;
-        if (ok) {
+        int pipe_fds[2];  // the program as bytes: through a pipe (libseccomp 2.5 exports to a descriptor only)
+        if ((ok = ok && ::pipe2(pipe_fds, O_CLOEXEC) == 0)) {
             ok = seccomp_export_bpf(ctx, pipe_fds[1]) == 0;
             ::close(pipe_fds[1]);
             std::string bytes;
@@ -352,7 +323,7 @@ const struct sock_fprog* containerFilter() {
     return &prog;
 }
 
-/// Runs a probe under confinement `c` (whichever the grader's is), with a log of its own: its outcome and log.
+/// Runs a probe under confinement `c` with a log of its own: its outcome and log.
 std::pair<RunOutcome, std::string> runProbe(SandboxRun probe, Confinement c, const std::string& name) {
     probe.log = fs::temp_directory_path() / ("clothlab-" + name + "-" + std::to_string(::getpid()) + ".log");
     const Confinement was = g_confinement;
@@ -362,6 +333,38 @@ std::pair<RunOutcome, std::string> runProbe(SandboxRun probe, Confinement c, con
     std::string log = readFile(probe.log, 1u << 20);
     fs::remove(probe.log);
     return {r, log};
+}
+
+/// Empty when container mode holds here (chooseConfinement), else why not, as one line.
+std::string containerProblem(const Protected& p) {
+    if (::geteuid() != 0) return "container mode needs the grader to run as root (it runs each program as a user of its own)";
+    const std::string mode = landlockAbi() > 0 ? "container mode" : "container mode without Landlock";
+    if (weakened("")) {  // test tool only (any CLOTHLAB_WEAKEN): a defence is off on purpose, no probe
+        std::fprintf(stderr, "warning: clothlab-grade-weakened: CLOTHLAB_WEAKEN=%s: %s is not probed\n", std::getenv("CLOTHLAB_WEAKEN"), mode.c_str());
+        return "";
+    }
+    for (const auto& path : p.needed)  // Landlock adds no permission: a run's user must pass every folder above
+        for (fs::path q = fs::absolute(path); !q.empty(); q = q.parent_path()) {
+            struct stat st {};
+            if (::stat(q.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && !(st.st_mode & S_IXOTH))
+                return mode + ": the programs cannot reach " + path.string() + ": " + q.string() + " lets no other user pass (chmod o+x it)";
+            if (q == q.root_path()) break;
+        }
+    if (p.students_apart && landlockAbi() == 0)
+        return mode + ": a class cannot be graded, one student's code could read another's files (grade one submission at a time)";
+    SandboxRun probe;
+    const fs::path self = fs::canonical("/proc/self/exe");
+    probe.argv = {self.string(), "--container-probe"};
+    for (const auto& f : p.unreadable) probe.argv.insert(probe.argv.end(), {"r", f.string()});
+    for (const auto& f : p.unwritable) probe.argv.insert(probe.argv.end(), {"w", f.string()});
+    probe.mounts = {{self, self, false}};
+    probe.timeout_seconds = 30;
+    const auto [r, log] = runProbe(probe, Confinement::container, "container-probe");
+    if (r.exit_code == 0 && log.find("probe: every guarantee holds") != std::string::npos) return "";
+    const size_t hole = log.find("hole: ");
+    if (hole == std::string::npos) return mode + ": the probe did not run (exit " + std::to_string(r.exit_code) + "): " + firstLines(log, 1, "");
+    return mode + ": " + log.substr(hole + 6, log.find('\n', hole) - hole - 6) +
+           (landlockAbi() > 0 ? "" : " (make it unreachable for other users, e.g. chmod o-rwx, or grade where Landlock or bubblewrap works)");
 }
 
 /// Writes a line to stderr from a child after fork() (async-signal-safe), then ends it with 126.
@@ -379,17 +382,12 @@ void setConfinement(Confinement c) { g_confinement = c; }
 Confinement confinement() { return g_confinement; }
 
 std::string confinementName() {
-    switch (g_confinement) {
-        case Confinement::bubblewrap: return "bubblewrap";
-        case Confinement::container:
-            return landlockAbi() > 0 ? "container mode (a user of its own per program, Landlock, seccomp; lacks PID and network "
-                                       "namespaces and a size limit on the scratch folder)"
-                                     : "container mode without Landlock (a user of its own per program, seccomp, reads confined by "
-                                       "file permissions only; lacks Landlock, PID and network namespaces and a size limit on the "
-                                       "scratch folder)";
-        case Confinement::none: break;
-    }
-    return "none (the programs run unconfined, with limits only)";
+    if (g_confinement == Confinement::bubblewrap) return "bubblewrap";
+    if (g_confinement == Confinement::none) return "none (the programs run unconfined, with limits only)";
+    return landlockAbi() > 0 ? "container mode (a user of its own per program, Landlock, seccomp; lacks PID and network namespaces and "
+                               "a size limit on the scratch folder)"
+                             : "container mode without Landlock (a user of its own per program, seccomp, reads confined by file "
+                               "permissions only; lacks Landlock, PID and network namespaces and a size limit on the scratch folder)";
 }
 
 std::string bubblewrapProblem() {
@@ -405,69 +403,24 @@ std::string bubblewrapProblem() {
     return problem;
 }
 
-int landlockAbi() {
-    static const int abi = [] {
-        const long v = ::syscall(SYS_landlock_create_ruleset, nullptr, 0, LANDLOCK_CREATE_RULESET_VERSION);
-        return v < 0 ? 0 : static_cast<int>(v);
-    }();
-    return abi;
-}
-
 Protected instructorFiles(const fs::path& tree, const std::vector<fs::path>& reference, const std::vector<fs::path>& unwritable) {
     Protected p;
-    const bool has_solutions = fs::is_directory(tree / "solutions");
     for (const char* dir : {"solutions", "tests/instructor"}) {
         std::vector<fs::path> files;
-        std::error_code ec;
-        for (fs::recursive_directory_iterator it(tree / dir, ec), end; !ec && it != end && files.size() < 2000; it.increment(ec))
-            if (it->is_regular_file(ec)) files.push_back(it->path());
+        forEachEntry(tree / dir, true, [&](const fs::path& f, const struct stat& st) {
+            if (S_ISREG(st.st_mode) && files.size() < 2000) files.push_back(f);
+        });
         std::sort(files.begin(), files.end());
         p.unreadable.insert(p.unreadable.end(), files.begin(), files.end());
     }
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(tree / "tests", ec))
-        if (e.path().string().size() > 12 && e.path().string().rfind(".points.json") == e.path().string().size() - 12) {
-            p.unreadable.push_back(e.path());
-            p.unwritable.push_back(e.path());
-        }
-    if (has_solutions) p.unreadable.insert(p.unreadable.end(), reference.begin(), reference.end());
+    forEachEntry(tree / "tests", false, [&](const fs::path& f, const struct stat&) {
+        const std::string s = f.string();
+        if (s.size() > 12 && s.compare(s.size() - 12, 12, ".points.json") == 0) p.unreadable.push_back(f), p.unwritable.push_back(f);
+    });
+    if (fs::is_directory(tree / "solutions")) p.unreadable.insert(p.unreadable.end(), reference.begin(), reference.end());
     p.unwritable.push_back(tree);
     p.unwritable.insert(p.unwritable.end(), unwritable.begin(), unwritable.end());
     return p;
-}
-
-std::string containerProblem(const Protected& p) {
-    if (::geteuid() != 0) return "container mode needs the grader to run as root (it runs each program as a user of its own)";
-    const std::string mode = landlockAbi() > 0 ? "container mode" : "container mode without Landlock";
-    if (weakened("")) {  // test tool only (any CLOTHLAB_WEAKEN): a defence is off on purpose, no probe
-        std::fprintf(stderr, "warning: clothlab-grade-weakened: CLOTHLAB_WEAKEN=%s: %s is not probed\n", std::getenv("CLOTHLAB_WEAKEN"), mode.c_str());
-        return "";
-    }
-    for (const auto& path : p.needed) {  // Landlock adds no permission: a run's user must pass every folder above
-        std::error_code ec;
-        for (fs::path q = fs::absolute(path); !q.empty(); q = q.parent_path()) {
-            struct stat st {};
-            if (::stat(q.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && !(st.st_mode & S_IXOTH))
-                return mode + ": the programs cannot reach " + path.string() + ": " + q.string() + " lets no other user pass (chmod o+x it)";
-            if (q == q.root_path()) break;
-        }
-    }
-    if (p.students_apart && landlockAbi() == 0)
-        return mode + ": a class cannot be graded, one student's code could read another's files (grade one submission at a time)";
-    SandboxRun probe;
-    const fs::path self = fs::canonical("/proc/self/exe");
-    probe.argv = {self.string(), "--container-probe"};
-    for (const auto& f : p.unreadable) probe.argv.insert(probe.argv.end(), {"r", f.string()});
-    for (const auto& f : p.unwritable) probe.argv.insert(probe.argv.end(), {"w", f.string()});
-    probe.mounts = {{self, self, false}};
-    probe.timeout_seconds = 30;
-    const auto [r, log] = runProbe(probe, Confinement::container, "container-probe");
-    if (r.exit_code == 0 && log.find("probe: every guarantee holds") != std::string::npos) return "";
-    const size_t hole = log.find("hole: ");
-    if (hole == std::string::npos)
-        return mode + ": the probe did not run (exit " + std::to_string(r.exit_code) + "): " + firstLines(log, 1, "");
-    return mode + ": " + log.substr(hole + 6, log.find('\n', hole) - hole - 6) +
-           (landlockAbi() > 0 ? "" : " (make it unreachable for other users, e.g. chmod o-rwx, or grade where Landlock or bubblewrap works)");
 }
 
 std::string chooseConfinement(const std::string& wanted, const Protected& p) {
@@ -491,10 +444,11 @@ int containerProbeMain(int argc, char** argv) {
     const auto hole = [&](const std::string& what) { std::printf("hole: %s\n", what.c_str()), ++holes; };
     for (int i = 2; i + 1 < argc; i += 2) {
         const std::string kind = argv[i], path = argv[i + 1];
+        std::error_code ec;
         if (kind == "r") {
             const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
             if (fd >= 0) hole("the submission could read " + path), ::close(fd);
-        } else if (std::error_code ec; fs::is_directory(path, ec)) {  // (a path it cannot even stat is no hole)
+        } else if (fs::is_directory(path, ec)) {  // (a path it cannot even stat is no hole)
             const std::string file = path + "/.clothlab-probe-" + std::to_string(::getpid());
             const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
             if (fd >= 0) hole("the submission could write into " + path), ::close(fd), ::unlink(file.c_str());
@@ -513,25 +467,9 @@ int containerProbeMain(int argc, char** argv) {
 
 void makeWritableForSandbox(const fs::path& dir) {
     fs::create_directories(dir);
-    if (::geteuid() != 0) {
-        fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add);
-    } else if (g_confinement == Confinement::container) {
-        if (::lchown(dir.c_str(), 0, 0) != 0) die(dir.string() + ": (folder): cannot make it root's");  // each run gets it while it lasts
-    } else if (::chown(dir.c_str(), kNobody, kNobody) != 0) {
-        die(dir.string() + ": (folder): cannot hand it to user nobody");
-    }
-}
-
-/// Outside bubblewrap the program sees the host's paths: a path inside a mount (at the start of an
-/// argument, after the '=' of --NAME=, or after -I) becomes the mount's host path.
-std::string outside(const std::string& arg, const std::vector<Mount>& mounts) {
-    const size_t at = arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos ? arg.find('=') + 1 : arg.rfind("-I", 0) == 0 ? 2 : 0;
-    for (const auto& m : mounts) {
-        const std::string in = m.inside.string();
-        if (arg.compare(at, in.size(), in) == 0 && (arg.size() == at + in.size() || arg[at + in.size()] == '/'))
-            return arg.substr(0, at) + m.host.string() + arg.substr(at + in.size());
-    }
-    return arg;
+    if (::geteuid() != 0) fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add);
+    else if (g_confinement == Confinement::container && ::lchown(dir.c_str(), 0, 0) != 0) die(dir.string() + ": (folder): cannot make it root's");
+    else if (g_confinement != Confinement::container && ::chown(dir.c_str(), kNobody, kNobody) != 0) die(dir.string() + ": (folder): cannot hand it to user nobody");
 }
 
 RunOutcome runSandboxed(const SandboxRun& run) {
@@ -541,67 +479,63 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe calls.
     RunUser user;
     if (container) user = leaseUser();
-    std::vector<std::string> args = bubblewrap ? bwrapArgs(run) : run.argv;
-    std::vector<std::string> env_text;
+    std::vector<std::string> args = bubblewrap ? bwrapArgs(run) : run.argv, env_text;
     std::string workdir;
     if (!bubblewrap) {
         for (auto& a : args) a = outside(a, run.mounts);
-        if (container) {
-            env_text = {"PATH=/usr/bin", "HOME=" + user.scratch.string(), "TMPDIR=" + user.scratch.string()};
-            workdir = run.workdir == "/tmp" ? user.scratch.string() : outside(run.workdir.string(), run.mounts);
-        } else {
+        if (container) env_text = {"PATH=/usr/bin", "HOME=" + user.scratch.string(), "TMPDIR=" + user.scratch.string()};
+        else
             for (char** e = ::environ; *e; ++e) env_text.emplace_back(*e);
-        }
+        workdir = container && run.workdir == "/tmp" ? user.scratch.string() : outside(run.workdir.string(), run.mounts);
         for (const auto& [name, value] : run.env) env_text.push_back(name + "=" + outside(value, run.mounts));
     }
     std::vector<char*> argv, envp;
     for (const auto& s : args) argv.push_back(const_cast<char*>(s.c_str()));
-    argv.push_back(nullptr);
     for (const auto& s : env_text) envp.push_back(const_cast<char*>(s.c_str()));
-    envp.push_back(nullptr);
+    argv.push_back(nullptr), envp.push_back(nullptr);
     const int ruleset = container ? landlockRules(run, user.scratch) : -1;
-    const struct sock_fprog* filter = container && !weakened("seccomp") ? containerFilter() : nullptr;
+    const struct sock_fprog* filter = container && !weakened("container-seccomp") ? containerFilter() : nullptr;
     if (container)
         for (const auto& m : run.mounts)
             if (m.writable && ::lchown(m.host.c_str(), user.uid, user.uid) != 0) die(m.host.string() + ": (folder): cannot hand it to the run's user");
     const uid_t runner = container ? user.uid : ::geteuid() == 0 && bubblewrap ? kNobody : ::geteuid();
-    const rlim_t nproc = static_cast<rlim_t>(processesOf(runner) + run.limits.processes + (bubblewrap ? 4 : 0));  // + bwrap's own
+    // The limits (test tool only: without the one a red-team attack aims at, tests/instructor/hostile/README.md).
+    const rlim_t unlimited = RLIM_INFINITY, cpu = weakened("time") ? unlimited : static_cast<rlim_t>(run.limits.cpu_seconds);
+    const std::pair<int, rlim_t> limits[] = {
+        {RLIMIT_AS, weakened("memory") ? unlimited : static_cast<rlim_t>(run.limits.address_space)},
+        {RLIMIT_FSIZE, weakened("file-size") ? unlimited : static_cast<rlim_t>(run.limits.file_size)},
+        {RLIMIT_NOFILE, static_cast<rlim_t>(run.limits.open_files)},
+        {RLIMIT_CORE, 0},
+        {RLIMIT_NPROC, static_cast<rlim_t>(processesOf(runner) + run.limits.processes + (bubblewrap ? 4 : 0))}};  // + bwrap's own
+    const int timeout_seconds = weakened("time") ? 86400 : run.timeout_seconds;
     const int log = ::open(run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (log < 0) die(run.log.string() + ": (file): cannot write the log");
     int report_pipe[2] = {-1, -1};
     if (run.channel && ::pipe2(report_pipe, O_CLOEXEC) != 0) die("cannot create a pipe");
-    const char* program = bubblewrap ? "bwrap" : argv[0];
     const uid_t id = user.uid;
 
     const pid_t pid = ::fork();
     if (pid < 0) die("fork failed");
     if (pid == 0) {
         ::setpgid(0, 0);  // its own process group: a timeout kills the group
-        ::dup2(log, 1);
-        ::dup2(log, 2);
-        const int devnull = ::open("/dev/null", O_RDONLY);
-        if (devnull >= 0) ::dup2(devnull, 0);
-        if (run.channel) {
-            // The write end onto fd 3 (moved above 9 first: it may be 3 already); dup2 gives the copy no
-            // close-on-exec flag, so exactly this one reaches the program.
-            const int report = ::fcntl(report_pipe[1], F_DUPFD_CLOEXEC, 10);
-            if (report < 0 || ::dup2(report, 3) != 3) ::_exit(125);
-        }
+        ::dup2(log, 1), ::dup2(log, 2);
+        if (const int devnull = ::open("/dev/null", O_RDONLY); devnull >= 0) ::dup2(devnull, 0);
+        // The channel's write end onto fd 3 (moved above 9 first: it may be 3 already); dup2 gives the
+        // copy no close-on-exec flag, so exactly this one reaches the program.
+        if (const int report = run.channel ? ::fcntl(report_pipe[1], F_DUPFD_CLOEXEC, 10) : 0; report < 0 || (run.channel && ::dup2(report, 3) != 3))
+            ::_exit(125);
         if (run.cpu >= 0) {
             cpu_set_t set;
             CPU_ZERO(&set);
             CPU_SET(run.cpu, &set);
             ::sched_setaffinity(0, sizeof set, &set);
         }
-        {  // SIGXCPU at the limit, SIGKILL a second later for a program that ignores SIGXCPU
-            const struct rlimit cpu {static_cast<rlim_t>(run.limits.cpu_seconds), static_cast<rlim_t>(run.limits.cpu_seconds) + 1};
-            ::setrlimit(RLIMIT_CPU, &cpu);
+        const struct rlimit cpu_limit {cpu, cpu == unlimited ? unlimited : cpu + 1};  // SIGXCPU, SIGKILL a second later
+        ::setrlimit(RLIMIT_CPU, &cpu_limit);
+        for (const auto& [resource, value] : limits) {
+            const struct rlimit r {value, value};
+            ::setrlimit(resource, &r);
         }
-        setLimit(RLIMIT_AS, static_cast<rlim_t>(run.limits.address_space));
-        setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(run.limits.file_size));
-        setLimit(RLIMIT_NOFILE, static_cast<rlim_t>(run.limits.open_files));
-        setLimit(RLIMIT_CORE, 0);
-        setLimit(RLIMIT_NPROC, nproc);
         if (container) {
             // The run's own user and group (raw system calls: this process alone, no C library
             // bookkeeping across threads), which drops every capability; then no_new_privs, Landlock, seccomp.
@@ -614,50 +548,43 @@ RunOutcome runSandboxed(const SandboxRun& run) {
             if (filter && ::prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, filter) != 0) childFails("seccomp");
             if (::chdir(workdir.c_str()) != 0) childFails("chdir to its scratch folder");
         }
-        if (bubblewrap) ::execvp(program, argv.data());
-        else ::execvpe(program, argv.data(), envp.data());
+        if (bubblewrap) ::execvp("bwrap", argv.data());
+        else ::execvpe(argv[0], argv.data(), envp.data());
         ::_exit(127);
     }
     ::close(log);
     if (ruleset >= 0) ::close(ruleset);
     if (run.channel) ::close(report_pipe[1]);
-    // Read the report channel (if any) until the deadline; then reap.
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(run.timeout_seconds);
+    // Read the channel (if any) until the program ends or the deadline passes; then what is still buffered.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_seconds);
+    const auto drain = [&](int wait_ms) {
+        struct pollfd p {report_pipe[0], POLLIN, 0};
+        char buf[4096];
+        while (report_pipe[0] >= 0 && ::poll(&p, 1, wait_ms) > 0) {
+            const ssize_t n = ::read(report_pipe[0], buf, sizeof buf);
+            if (n <= 0) ::close(report_pipe[0]), report_pipe[0] = -1;
+            else if (out.report.size() < (8u << 20)) out.report.append(buf, static_cast<size_t>(n));
+            if (wait_ms > 0) break;
+        }
+    };
     int status = 0;
-    bool reaped = false;
-    while (!reaped) {
+    for (bool reaped = false; !reaped;) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
         if (left <= 0) {
             out.timed_out = true;
-            ::kill(-pid, SIGKILL);
-            ::kill(pid, SIGKILL);
+            ::kill(-pid, SIGKILL), ::kill(pid, SIGKILL);
             ::waitpid(pid, &status, 0);
             break;
         }
-        if (run.channel && report_pipe[0] >= 0) {
-            struct pollfd p {report_pipe[0], POLLIN, 0};
-            if (::poll(&p, 1, static_cast<int>(std::min<long long>(left, 50))) > 0) {
-                char buf[4096];
-                const ssize_t n = ::read(report_pipe[0], buf, sizeof buf);
-                if (n > 0 && out.report.size() < (8u << 20)) out.report.append(buf, static_cast<size_t>(n));
-                if (n <= 0) { ::close(report_pipe[0]); report_pipe[0] = -1; }
-            }
-        } else {
-            ::usleep(2000);
-        }
-        if (::waitpid(pid, &status, WNOHANG) == pid) reaped = true;
+        if (report_pipe[0] >= 0) drain(static_cast<int>(std::min<long long>(left, 50)));
+        else ::usleep(2000);
+        reaped = ::waitpid(pid, &status, WNOHANG) == pid;
     }
-    if (run.channel && report_pipe[0] >= 0) {  // what is still buffered
-        ::fcntl(report_pipe[0], F_SETFL, O_NONBLOCK);
-        char buf[4096];
-        ssize_t n;
-        while ((n = ::read(report_pipe[0], buf, sizeof buf)) > 0 && out.report.size() < (8u << 20)) out.report.append(buf, static_cast<size_t>(n));
-        ::close(report_pipe[0]);
-    }
+    drain(0);
+    if (report_pipe[0] >= 0) ::close(report_pipe[0]);
     ::kill(-pid, SIGKILL);  // whatever the program left in its group
     if (container) releaseUser(user, run.mounts);
     out.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-
     return out;
 }
 

@@ -1,5 +1,5 @@
-// Messages between the test process and the submission process (see remote/peer.h).
-#include "remote/peer.h"
+// Messages between the test process and the submission process (see wire/peer.h).
+#include "wire/peer.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -170,18 +170,13 @@ void Peer::handle(const Message& m) {
     } catch (const NotImplemented& e) {
         const std::string what = e.what(), prefix = "not implemented: ";
         error = thrown(Thrown::NotImplemented, what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
-    } catch (const CallbackFailed& e) {
-        error = thrown(Thrown::Callback, e.what());
-    } catch (const std::invalid_argument& e) {
-        error = thrown(Thrown::InvalidArgument, e.what());
-    } catch (const std::out_of_range& e) {
-        error = thrown(Thrown::OutOfRange, e.what());
-    } catch (const std::domain_error& e) {
-        error = thrown(Thrown::DomainError, e.what());
-    } catch (const std::logic_error& e) {
-        error = thrown(Thrown::LogicError, e.what());
-    } catch (const std::exception& e) {
-        error = thrown(Thrown::Other, e.what());
+    } catch (const std::exception& e) {  // the most derived of the types that keep their type
+        const Thrown kind = dynamic_cast<const CallbackFailed*>(&e) ? Thrown::Callback
+                          : dynamic_cast<const std::invalid_argument*>(&e) ? Thrown::InvalidArgument
+                          : dynamic_cast<const std::out_of_range*>(&e) ? Thrown::OutOfRange
+                          : dynamic_cast<const std::domain_error*>(&e) ? Thrown::DomainError
+                          : dynamic_cast<const std::logic_error*>(&e) ? Thrown::LogicError : Thrown::Other;
+        error = thrown(kind, e.what());
     } catch (...) {
         error = thrown(Thrown::Other, "an exception that is not a std::exception");
     }
@@ -251,6 +246,7 @@ std::string Peer::disconnect(bool ended) {
         } else if (WIFSIGNALED(status)) {
             const int sig = WTERMSIG(status);
             how = "signal " + std::to_string(sig) + ", " + ::strsignal(sig);
+            if (onSignal) onSignal(sig);
         } else if (WIFEXITED(status)) {
             how = "it called exit(" + std::to_string(WEXITSTATUS(status)) + ")";
         }

@@ -14,6 +14,6 @@ struct Finding {
 };
 
 /// Lints one source file of a stage. `display` is its name in messages ("01_hooke/hooke.cpp").
-std::vector<Finding> screenSource(const std::string& text, const std::string& display);
+std::vector<Finding> lintSource(const std::string& text, const std::string& display);
 
 }  // namespace grade
