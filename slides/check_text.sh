@@ -10,7 +10,8 @@
 #   may appear in the deck's projected text, on any slide, whatever the line breaks. The keys of an
 #   answer: its formulas ($...$, cut at = < > \le \ge \approx; a part counts when it has an operator
 #   ^ / + - inside, is not just "a - b" of two symbols and is not in a question), its numbers (a formula's part that
-#   is a number, or a number followed by a unit, with at least two significant digits) and its word
+#   is a number, or a number followed by a unit, with at least two significant digits; not searched
+#   in raw LaTeX, where TikZ coordinates are numbers) and its word
 #   4-grams (math spans as single words; with at least one word of 4+ letters that is no stop word, or
 #   a formula), all after the same normalising of both texts: one line, lower case, LaTeX spacing and
 #   \vb, \mathbf, \text... dropped, braces dropped, German decimal commas as points. A 4-gram that is
@@ -79,18 +80,22 @@ sub tokens {
 sub grams { my @t = @_; map { join " ", @t[$_ .. $_ + 3] } 0 .. $#t - 3 }
 # the slides: title, classes, projected lines, notes lines
 my (@slides, @stack);
-my $cur = { title => "(chapter title)", classes => "", proj => [], notes => [] };
+my $raw = 0;
+my $cur = { title => "(chapter title)", classes => "", proj => [], notes => [], text => [] };
 push @slides, $cur;
 for my $line (split /\n/, do { local $/; <STDIN> }) {
+  my $fence = $line =~ /^```/;  # a raw LaTeX block opens with ```{=latex} and closes with ```
+  if ($fence) { if ($raw) { $raw = 0 } elsif ($line =~ /^```\{=latex\}/) { $raw = 1 } }
   if ($line =~ /^:::+ *([^: ].*?) *$/) { push @stack, ($1 eq "notes" ? "notes" : "div"); next }
   if ($line =~ /^:::+ *$/ && @stack) { pop @stack; next }
   my $in_notes = grep { $_ eq "notes" } @stack;
   if (!$in_notes && $line =~ /^## (.*?)( \{(\.[^}]*)\})? *$/) {
-    $cur = { title => $1, classes => $3 // "", proj => [], notes => [] };
+    $cur = { title => $1, classes => $3 // "", proj => [], notes => [], text => [] };
     push @slides, $cur;
     next;
   }
   push @{ $in_notes ? $cur->{notes} : $cur->{proj} }, $line;
+  push @{ $cur->{text} }, $line unless $in_notes || $raw || $fence;  # without raw LaTeX (TikZ coordinates)
 }
 # paragraphs of a slide notes that start with **WORD...**
 sub paragraphs {
@@ -118,6 +123,7 @@ for my $s (@slides) {
 }
 # each slide projected, as one line of tokens
 my @shown = map { [$_->{title}, " " . join(" ", tokens(join " ", $_->{title}, @{ $_->{proj} })) . " "] } @slides;
+my @shown_text = map { [$_->{title}, " " . join(" ", tokens(join " ", $_->{title}, @{ $_->{text} })) . " "] } @slides;
 sub where {  # the titles of the projected slides that contain the words NEEDLE, or ()
   my ($needle) = @_;
   return map { $_->[0] } grep { index($_->[1], " $needle ") >= 0 } @shown;
@@ -157,7 +163,7 @@ for my $s (@slides) {
         next if length $sig < 2;
       }
       my @at = $kind eq "formula" ? (map { $_->[0] } grep { index($_->[1], $needle) >= 0 } @shown)
-             : $kind eq "number" ? (map { $_->[0] } grep { $_->[1] =~ /(?<![\d.])\Q$needle\E(?!\d|\.\d)/ } @shown)
+             : $kind eq "number" ? (map { $_->[0] } grep { $_->[1] =~ /(?<![\d.])\Q$needle\E(?!\d|\.\d)/ } @shown_text)
              : where($needle);
       for my $at (@at) {
         next if $told{"$needle\t$at"}++;
