@@ -9,14 +9,14 @@
 #   that starts with **Answer**/**Answers**/**Antwort**/**Antworten** gives its keys, and none of them
 #   may appear in the deck's projected text, on any slide, whatever the line breaks. The keys of an
 #   answer: its formulas ($...$, cut at = < > \le \ge \approx; a part counts when it has an operator
-#   ^ / + - inside, is not just "a - b" of two symbols and is not in a question), its numbers (a formula's part that
-#   is a number, or a number followed by a unit, with at least two significant digits; not searched
-#   in raw LaTeX, where TikZ coordinates are numbers) and its word
-#   4-grams (math spans as single words; with at least one word of 4+ letters that is no stop word, or
-#   a formula), all after the same normalising of both texts: one line, lower case, LaTeX spacing and
-#   \vb, \mathbf, \text... dropped, braces dropped, German decimal commas as points. A 4-gram that is
-#   also in an audience question of the deck (the numbered items under "Ask the audience", the
-#   **Ask:** of the notes) is an echo of the question, not an answer;
+#   ^ / + - inside and is not just "a - b" of two symbols), its numbers (a formula's part that is a
+#   number, or a number followed by a unit, with two significant digits or more; not searched in raw
+#   LaTeX, where TikZ coordinates are numbers) and its word 4-grams (a math span is one word; at least
+#   one word of 4+ letters that is no stop word, or a formula), all after the same normalising of both
+#   texts: one line, lower case, LaTeX spacing and \vb, \mathbf, \text... dropped, braces dropped,
+#   German decimal commas as points. A 4-gram or formula that is also in a question of the deck (the
+#   numbered items under "Ask the audience", the **Ask:** of the notes, a projected sentence ending in
+#   "?") is an echo of the question, not an answer;
 # - notes on every derivation slide: a heading marked {.en .derivation} / {.de .derivation} has, in
 #   both editions, notes with "**Derivation** (about N min)" ("**Herleitung** (etwa N min)"), the
 #   question to ask ("**Ask:** ...?", "**Frage:** ...?") and its "**Answer:**" ("**Antwort:**"); a slide
