@@ -163,7 +163,7 @@ for my $s (@slides) {
         next if length $sig < 2;
       }
       my @at = $kind eq "formula" ? (map { $_->[0] } grep { index($_->[1], $needle) >= 0 } @shown)
-             : $kind eq "number" ? (map { $_->[0] } grep { $_->[1] =~ /(?<![\d.])\Q$needle\E(?!\d|\.\d)/ } @shown_text)
+             : $kind eq "number" ? (map { $_->[0] } grep { $_->[1] =~ /(?<![\w.])\Q$needle\E(?!\w|\.\d)/ } @shown_text)
              : where($needle);
       for my $at (@at) {
         next if $told{"$needle\t$at"}++;
