@@ -564,5 +564,5 @@ TEST(Task1_5_VelocityVerlet, ConservesMomentumAndAngularMomentumWithRandomMasses
 // explain the difference, in exercises/01_hooke/answers.json. This test checks only that the file is
 // complete and well formed; the numbers are graded by the instructor.
 TEST(Experiments, AnswerFileIsComplete) {
-    EXPECT_TRUE(testing_util::answerFileIsComplete("01_hooke", {"symplectic_euler_order", "velocity_verlet_order"}, {"symplectic_euler_order", "velocity_verlet_order"}));
+    EXPECT_TRUE(testing_util::answerFileIsComplete("01_hooke", {"energy_drift_dt_1ms", "energy_drift_dt_0_5ms"}, {"energy_drift_dt_1ms", "energy_drift_dt_0_5ms"}));
 }
