@@ -142,8 +142,8 @@ say "report $nn: the figures, made by $made_by"
 case $nn in
   01)
     set -- ; for d in 0.001 0.0005; do
-      run "./lab run scenes/spring.json --set solver.method=explicit_euler --set solver.dt=$d --seconds 5 --every 20 --out DIR" \
-        run scenes/spring.json --set solver.method=explicit_euler --set solver.dt=$d --seconds 5 --every 20 --quiet --out "$w/e$d" \
+      run "./lab run scenes/spring.json --set solver.method=explicit_euler --set solver.dt=$d --seconds 1 --every 10 --out DIR" \
+        run scenes/spring.json --set solver.method=explicit_euler --set solver.dt=$d --seconds 1 --every 10 --quiet --out "$w/e$d" \
         && series "$w/e$d/report.csv" "t [s]" "energy_drift [J]" >"$w/e$d.dat"
       set -- "$@" "$w/e$d.dat:dt = $d s"
     done

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "clothlab/core/mesh.h"
 #include "clothlab/exercise/07_self_collision.h"
 #include "clothlab/io/scene_json.h"
 #include "experiment_scenes.h"
