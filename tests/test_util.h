@@ -316,12 +316,6 @@ inline SceneRun runScene(const char* sceneText, const std::string& file, const s
     return run;
 }
 
-/// The final value of metric `name` after runScene(sceneText, file, sets).
-/// @throws std::runtime_error as runScene() and SceneRun::metric()
-inline double finalMetric(const char* sceneText, const std::string& file, const std::vector<std::string>& sets, const std::string& name) {
-    return runScene(sceneText, file, sets).metric(name);
-}
-
 /// A measurement from a run that warned is no result (the summary says "this result is not a result"):
 /// a failure naming the run and its warning, so its measurement earns no points; success otherwise.
 /// @param run  the run the measurement came from
