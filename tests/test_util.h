@@ -316,7 +316,7 @@ inline SceneRun runScene(const char* sceneText, const std::string& file, const s
     return run;
 }
 
-/// A measurement from a run that warned is no result (the summary says "this result is not a result"):
+/// A measurement from a run that warned is no result (its summary says not to trust the numbers):
 /// a failure naming the run and its warning, so its measurement earns no points; success otherwise.
 /// @param run  the run the measurement came from
 inline testing::AssertionResult runGaveAResult(const SceneRun& run) {

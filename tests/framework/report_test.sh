@@ -88,7 +88,7 @@ cp "$tmp/fields.json" "$ex/answers.json"
 # a run that warned: its numbers are no result, so the report repeats its warning beside the figure and on
 # the terminal (a stand-in command line whose runs end with a warning, as ./lab run prints it)
 mkdir -p "$tmp/warn/bin" && cp "$tmp/stub/CMakeCache.txt" "$tmp/warn/"
-printf '#!/bin/sh\necho "summary: 10 steps"\necho "warnings: this result is not a result (1):"\necho "  warning: MARKER_WARN a pinned particle (0) moved in the pass constraints: distance"\nexit 0\n' >"$tmp/warn/bin/clothlab"
+printf '#!/bin/sh\necho "summary: 10 steps"\necho "warnings (1): do not trust the numbers above; each warning says why and what would help"\necho "  warning: MARKER_WARN a pinned particle (0) moved in the pass constraints: distance"\nexit 0\n' >"$tmp/warn/bin/clothlab"
 chmod +x "$tmp/warn/bin/clothlab"
 bash "$src/tools/report.sh" --root "$tree" --build "$tmp/warn" 01 --out "$tmp/warnout" >"$tmp/warn.log" 2>&1 || fail "the report of runs that warned failed: $(tail -3 "$tmp/warn.log")"
 [[ $(grep -c 'class="fail">Warning: a run of this figure warned' "$tmp/warnout/01_hooke.html" 2>/dev/null) -eq 3 ]] \
