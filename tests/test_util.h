@@ -297,6 +297,15 @@ struct SceneRun {
     }
 };
 
+/// One quantity of an instructor's experiment that the student predicts and measures: its field in
+/// answers.json, the value of the setting the runs vary (a time step in s, a stiffness), and the
+/// quantity in words with its unit, for messages.
+struct ExperimentField {
+    const char* field;  ///< e.g. "link_strain_dt_0_01"
+    double setting;     ///< e.g. 0.01 (s)
+    const char* what;   ///< e.g. "the strain at rest of the link of pbd_link at dt = 0.01 s, 1"
+};
+
 /// Runs a scene as `./lab run` does (SceneRun). `file` is the scene's path as the student types it
 /// (mesh files are looked up beside it).
 /// @throws std::runtime_error when that run stops (the code under test blew up): the test fails with

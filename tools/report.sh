@@ -114,6 +114,19 @@ figure() {
 }
 # window DIR METRIC STAT: the metric's min, mean or max over the run's --window (summary.json).
 window() { jq -r ".window.metrics.$2.$3 // empty" "$1/summary.json" 2>/dev/null; }
+# over_time PNG TITLE METRIC KEY "V1 V2 ..." SHOWN ARGS...: the experiment's runs, one per value V of the
+# scene field KEY (--set KEY=V, --every 1; SHOWN and ARGS: the rest of the command as typed and as run),
+# METRIC [unit] of each against time in one plot.
+over_time() {
+  local png=$1 title=$2 metric=$3 key=$4 values=$5 shown=$6 v; shift 6
+  local -a curves=()
+  for v in $values; do
+    run "./lab run $shown --set $key=$v --every 1 --out DIR" run "$@" --set "$key=$v" --every 1 --quiet --out "$w/o$v" \
+      && series "$w/o$v/report.csv" "t [s]" "$metric" >"$w/o$v.dat"
+    curves+=("$w/o$v.dat:$key = $v")
+  done
+  plot "$png" "$title (report.csv of each run)" "t [s]" "$metric" "" "${curves[@]}"
+}
 # series CSV XNAME YNAME [SCALE OFFSET] > DAT: two columns of a report.csv, by header name (y*SCALE+OFFSET).
 series() {
   awk -F, -v xn="$2" -v yn="$3" -v s="${4:-1}" -v o="${5:-0}" \
@@ -141,13 +154,8 @@ w=$work
 say "report $nn: the figures, made by $made_by"
 case $nn in
   01)
-    set -- ; for d in 0.001 0.0005; do
-      run "./lab run scenes/spring.json --set solver.method=explicit_euler --set solver.dt=$d --seconds 1 --every 10 --out DIR" \
-        run scenes/spring.json --set solver.method=explicit_euler --set solver.dt=$d --seconds 1 --every 10 --quiet --out "$w/e$d" \
-        && series "$w/e$d/report.csv" "t [s]" "energy_drift [J]" >"$w/e$d.dat"
-      set -- "$@" "$w/e$d.dat:dt = $d s"
-    done
-    plot "$w/drift.png" "Energy drift E - E(0) of the spring with explicit Euler (report.csv of each run)" "t [s]" "energy_drift [J]" "" "$@"
+    over_time "$w/drift.png" "Energy drift E - E(0) of the spring with explicit Euler" "energy_drift [J]" solver.dt "0.001 0.0005" \
+      "scenes/spring.json --set solver.method=explicit_euler --seconds 1" scenes/spring.json --set solver.method=explicit_euler --seconds 1
     figure "The experiment: explicit Euler's energy drift at two time steps" "$w/drift.png"
     set -- ; for m in explicit_euler symplectic_euler velocity_verlet; do
       run "./lab run scenes/spring.json --set solver.method=$m --every 10 --out DIR" \
@@ -166,13 +174,8 @@ case $nn in
       && grep 'critical dt' "$w/last.log" >"$w/s.txt"
     figure "Stability map of the hanging cloth (symplectic Euler): stiffness against time step" "$w/s/stability_symplectic_euler.png" "$w/s.txt" ;;
   03)
-    set -- ; for d in 0.01 0.005; do
-      run "./lab run scenes/pbd_curtain.json --set 'cloth.pins=[]' --set solver.dt=$d --seconds 1 --every 1 --out DIR" \
-        run scenes/pbd_curtain.json --set 'cloth.pins=[]' --set solver.dt=$d --seconds 1 --every 1 --quiet --out "$w/f$d" \
-        && series "$w/f$d/report.csv" "t [s]" "energy_drift [J]" >"$w/f$d.dat"
-      set -- "$@" "$w/f$d.dat:dt = $d s"
-    done
-    plot "$w/fall.png" "Energy drift E - E(0) of the curtain falling freely (no pins; report.csv of each run)" "t [s]" "energy_drift [J]" "" "$@"
+    over_time "$w/fall.png" "Energy drift E - E(0) of the curtain falling freely (no pins)" "energy_drift [J]" solver.dt "0.01 0.005" \
+      "scenes/pbd_curtain.json --set 'cloth.pins=[]' --seconds 1" scenes/pbd_curtain.json --set 'cloth.pins=[]' --seconds 1
     figure "The experiment: the free fall's energy drift at two time steps" "$w/fall.png"
     : >"$w/itmin.dat"; : >"$w/itmean.dat"; : >"$w/itmax.dat"
     for i in 1 2 5 10 20 50; do
@@ -188,13 +191,8 @@ case $nn in
       && sed -n '/^static sag/,/^wrote/p' "$w/last.log" | grep -v '^wrote' >"$w/sag.txt"
     figure "Static sag against iterations, PBD against XPBD" "$w/sag/sag.png" "$w/sag.txt" ;;
   04)
-    set -- ; for d in 0.01 0.005; do
-      run "./lab run scenes/pbd_link.json --set solver.dt=$d --seconds 1 --every 1 --out DIR" \
-        run scenes/pbd_link.json --set solver.dt=$d --seconds 1 --every 1 --quiet --out "$w/l$d" \
-        && series "$w/l$d/report.csv" "t [s]" "max_strain [1]" >"$w/l$d.dat"
-      set -- "$@" "$w/l$d.dat:dt = $d s"
-    done
-    plot "$w/link.png" "Strain of the link of pbd_link against time (report.csv of each run)" "t [s]" "max_strain [1]" "" "$@"
+    over_time "$w/link.png" "Strain of the link of pbd_link" "max_strain [1]" solver.dt "0.01 0.005" \
+      "scenes/pbd_link.json --seconds 1" scenes/pbd_link.json --seconds 1
     figure "The experiment: the hanging link's strain at two time steps" "$w/link.png"
     : >"$w/kmin.dat"; : >"$w/kmean.dat"; : >"$w/kmax.dat"
     for k in 0.5 0.7 0.8 0.9 0.95 0.98 1; do
@@ -210,13 +208,8 @@ case $nn in
     plot "$w/kt.png" "Curtain max_strain against time: it swings" "t [s]" "max_strain [1]" "" "$w/t1.dat:k = 1" "$w/t09.dat:k = 0.9"
     figure "Curtain strain against time at k = 1 and k = 0.9" "$w/kt.png" ;;
   05)
-    set -- ; for k in 0.1 0.5; do
-      run "./lab run scenes/pbd_hinge.json --set constraints.bending.stiffness=$k --every 1 --out DIR" \
-        run scenes/pbd_hinge.json --set constraints.bending.stiffness=$k --every 1 --quiet --out "$w/h$k" \
-        && series "$w/h$k/report.csv" "t [s]" "rms_bending_error [rad]" >"$w/h$k.dat"
-      set -- "$@" "$w/h$k.dat:bending stiffness $k"
-    done
-    plot "$w/hinge.png" "Bending error of the hinge of pbd_hinge against time (report.csv of each run)" "t [s]" "rms_bending_error [rad]" "" "$@"
+    over_time "$w/hinge.png" "Bending error of the hinge of pbd_hinge" "rms_bending_error [rad]" constraints.bending.stiffness "0.1 0.5" \
+      "scenes/pbd_hinge.json" scenes/pbd_hinge.json
     figure "The experiment: the hinge's bending error at two bending stiffnesses" "$w/hinge.png"
     set -- ; for k in 0.01 1; do
       : >"$w/b$k.dat"

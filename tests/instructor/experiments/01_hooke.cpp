@@ -22,12 +22,7 @@ using namespace clothlab;
 namespace {
 constexpr double kSeconds = 1.0;  // the run's length, s (before the drift reaches the run's energy-growth warning)
 
-struct Drift {
-    const char* field;
-    double dt;  // s
-    const char* what;
-};
-constexpr Drift kDrifts[] = {
+constexpr testing_util::ExperimentField kDrifts[] = {  // the time step, s
     {"energy_drift_dt_1ms", 0.001, "the energy drift E(1 s) - E(0) of the spring with explicit Euler at dt = 1 ms, J"},
     {"energy_drift_dt_0_5ms", 0.0005, "the energy drift E(1 s) - E(0) of the spring with explicit Euler at dt = 0.5 ms, J"},
 };
@@ -47,12 +42,12 @@ testing::AssertionResult theoryDrift(double dt, double* drift) {
     return testing::AssertionSuccess();
 }
 
-testing::AssertionResult gradeDriftMeasured(const Drift& d) {
+testing::AssertionResult gradeDriftMeasured(const testing_util::ExperimentField& d) {
     double theory = 0;
-    testing::AssertionResult physics = theoryDrift(d.dt, &theory);
+    testing::AssertionResult physics = theoryDrift(d.setting, &theory);
     const testing_util::SceneRun run =
         testing_util::runScene(kScene_spring, "scenes/spring.json",
-                               {"solver.method=explicit_euler", "solver.dt=" + testing_util::num(d.dt), "solver.steps=" + std::to_string(stepsOf(d.dt))});
+                               {"solver.method=explicit_euler", "solver.setting=" + testing_util::num(d.setting), "solver.steps=" + std::to_string(stepsOf(d.setting))});
     const double own = run.metric("energy_drift");
     if (physics && std::abs(own - theory) > 1e-3 * std::abs(theory))
         physics = testing::AssertionFailure() << "your explicit Euler does not change the energy of the undamped spring as the method does "
@@ -63,14 +58,14 @@ testing::AssertionResult gradeDriftMeasured(const Drift& d) {
 }  // namespace
 
 TEST(Experiments, EnergyDriftPredicted) {
-    for (const Drift& d : kDrifts) {
+    for (const testing_util::ExperimentField& d : kDrifts) {
         double theory = 0;
-        const testing::AssertionResult scene = theoryDrift(d.dt, &theory);
+        const testing::AssertionResult scene = theoryDrift(d.setting, &theory);
         EXPECT_GRADED(scene);
         if (scene) EXPECT_GRADED(testing_util::gradePrediction("01_hooke", d.field, theory, 0.01 * std::abs(theory), d.what));
     }
 }
 
 TEST(Experiments, EnergyDriftMeasured) {
-    for (const Drift& d : kDrifts) EXPECT_GRADED(gradeDriftMeasured(d));
+    for (const testing_util::ExperimentField& d : kDrifts) EXPECT_GRADED(gradeDriftMeasured(d));
 }

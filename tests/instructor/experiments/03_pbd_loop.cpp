@@ -21,12 +21,7 @@ using namespace clothlab;
 namespace {
 constexpr double kSeconds = 1.0;  // s
 
-struct Drift {
-    const char* field;
-    double dt;  // s
-    const char* what;
-};
-constexpr Drift kDrifts[] = {
+constexpr testing_util::ExperimentField kDrifts[] = {  // the time step, s
     {"energy_drift_dt_0_01", 0.01, "the energy drift E(1 s) - E(0) of the freely falling curtain with dt = 0.01 s, J"},
     {"energy_drift_dt_0_005", 0.005, "the energy drift E(1 s) - E(0) of the freely falling curtain with dt = 0.005 s, J"},
 };
@@ -39,11 +34,11 @@ double theoryDrift(double dt) {
     return -0.5 * s.cloth.mass * g * g * dt * (static_cast<double>(stepsOf(dt)) * dt);
 }
 
-testing::AssertionResult gradeDriftMeasured(const Drift& d) {
-    const double theory = theoryDrift(d.dt);
+testing::AssertionResult gradeDriftMeasured(const testing_util::ExperimentField& d) {
+    const double theory = theoryDrift(d.setting);
     const testing_util::SceneRun run = testing_util::runScene(
         kScene_pbd_curtain, "scenes/pbd_curtain.json",
-        {"cloth.pins=[]", "solver.dt=" + testing_util::num(d.dt), "solver.steps=" + std::to_string(stepsOf(d.dt))});
+        {"cloth.pins=[]", "solver.setting=" + testing_util::num(d.setting), "solver.steps=" + std::to_string(stepsOf(d.setting))});
     const double own = run.metric("energy_drift");
     testing::AssertionResult physics = testing::AssertionSuccess();
     if (std::abs(own - theory) > 1e-6 * std::abs(theory))
@@ -55,12 +50,12 @@ testing::AssertionResult gradeDriftMeasured(const Drift& d) {
 }  // namespace
 
 TEST(Experiments, FreeFallEnergyDriftPredicted) {
-    for (const Drift& d : kDrifts) {
-        const double theory = theoryDrift(d.dt);
+    for (const testing_util::ExperimentField& d : kDrifts) {
+        const double theory = theoryDrift(d.setting);
         EXPECT_GRADED(testing_util::gradePrediction("03_pbd_loop", d.field, theory, 0.01 * std::abs(theory), d.what));
     }
 }
 
 TEST(Experiments, FreeFallEnergyDriftMeasured) {
-    for (const Drift& d : kDrifts) EXPECT_GRADED(gradeDriftMeasured(d));
+    for (const testing_util::ExperimentField& d : kDrifts) EXPECT_GRADED(gradeDriftMeasured(d));
 }

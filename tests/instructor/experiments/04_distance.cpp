@@ -23,12 +23,7 @@ using namespace clothlab;
 namespace {
 constexpr double kSeconds = 1.0;  // the run's length, s (the scene's 100 steps of 0.01 s)
 
-struct Strain {
-    const char* field;
-    double dt;  // s
-    const char* what;
-};
-constexpr Strain kStrains[] = {
+constexpr testing_util::ExperimentField kStrains[] = {  // the time step, s
     {"link_strain_dt_0_01", 0.01, "the strain at rest of the link of pbd_link at dt = 0.01 s, 1"},
     {"link_strain_dt_0_005", 0.005, "the strain at rest of the link of pbd_link at dt = 0.005 s, 1"},
 };
@@ -49,11 +44,11 @@ testing::AssertionResult projectionConservesMomentum() {
                                           "Task4_3 tests show where)";
 }
 
-testing::AssertionResult gradeStrainMeasured(const Strain& st) {
-    const double theory = theoryStrain(st.dt);
+testing::AssertionResult gradeStrainMeasured(const testing_util::ExperimentField& st) {
+    const double theory = theoryStrain(st.setting);
     const testing_util::SceneRun run = testing_util::runScene(
         kScene_pbd_link, "scenes/pbd_link.json",
-        {"solver.dt=" + testing_util::num(st.dt), "solver.steps=" + std::to_string(std::llround(kSeconds / st.dt))});
+        {"solver.setting=" + testing_util::num(st.setting), "solver.steps=" + std::to_string(std::llround(kSeconds / st.setting))});
     const double own = run.metric("max_strain");
     testing::AssertionResult physics = projectionConservesMomentum();
     if (physics && std::abs(own - theory) > 0.01 * theory)
@@ -65,12 +60,12 @@ testing::AssertionResult gradeStrainMeasured(const Strain& st) {
 }  // namespace
 
 TEST(Experiments, LinkStrainPredicted) {
-    for (const Strain& st : kStrains) {
-        const double theory = theoryStrain(st.dt);
+    for (const testing_util::ExperimentField& st : kStrains) {
+        const double theory = theoryStrain(st.setting);
         EXPECT_GRADED(testing_util::gradePrediction("04_distance", st.field, theory, 0.01 * theory, st.what));
     }
 }
 
 TEST(Experiments, LinkStrainMeasured) {
-    for (const Strain& st : kStrains) EXPECT_GRADED(gradeStrainMeasured(st));
+    for (const testing_util::ExperimentField& st : kStrains) EXPECT_GRADED(gradeStrainMeasured(st));
 }

@@ -24,14 +24,9 @@
 using namespace clothlab;
 
 namespace {
-struct Droop {
-    const char* field;
-    const char* stiffness;  // as --set takes it
-    const char* what;
-};
-constexpr Droop kDroops[] = {
-    {"bending_error_stiffness_0_1", "0.1", "the bending error at rest of the hinge of pbd_hinge at bending stiffness 0.1, rad"},
-    {"bending_error_stiffness_0_5", "0.5", "the bending error at rest of the hinge of pbd_hinge at bending stiffness 0.5, rad"},
+constexpr testing_util::ExperimentField kDroops[] = {  // the bending stiffness
+    {"bending_error_stiffness_0_1", 0.1, "the bending error at rest of the hinge of pbd_hinge at bending stiffness 0.1, rad"},
+    {"bending_error_stiffness_0_5", 0.5, "the bending error at rest of the hinge of pbd_hinge at bending stiffness 0.5, rad"},
 };
 
 double theoryDroop(double k) {
@@ -58,10 +53,10 @@ testing::AssertionResult projectionMovesTowardsRest() {
                                           "value without creating momentum (the stage's Task5_* tests show where)";
 }
 
-testing::AssertionResult gradeDroopMeasured(const Droop& d) {
-    const double theory = theoryDroop(std::stod(d.stiffness));
+testing::AssertionResult gradeDroopMeasured(const testing_util::ExperimentField& d) {
+    const double theory = theoryDroop(d.setting);
     const testing_util::SceneRun run =
-        testing_util::runScene(kScene_pbd_hinge, "scenes/pbd_hinge.json", {std::string("constraints.bending.stiffness=") + d.stiffness});
+        testing_util::runScene(kScene_pbd_hinge, "scenes/pbd_hinge.json", {"constraints.bending.stiffness=" + testing_util::num(d.setting)});
     const double own = run.metric("rms_bending_error");
     testing::AssertionResult physics = projectionMovesTowardsRest();
     if (physics && std::abs(own - theory) > 0.02 * theory)
@@ -73,12 +68,12 @@ testing::AssertionResult gradeDroopMeasured(const Droop& d) {
 }  // namespace
 
 TEST(Experiments, HingeDroopPredicted) {
-    for (const Droop& d : kDroops) {
-        const double theory = theoryDroop(std::stod(d.stiffness));
+    for (const testing_util::ExperimentField& d : kDroops) {
+        const double theory = theoryDroop(d.setting);
         EXPECT_GRADED(testing_util::gradePrediction("05_bending", d.field, theory, 0.01 * theory, d.what));
     }
 }
 
 TEST(Experiments, HingeDroopMeasured) {
-    for (const Droop& d : kDroops) EXPECT_GRADED(gradeDroopMeasured(d));
+    for (const testing_util::ExperimentField& d : kDroops) EXPECT_GRADED(gradeDroopMeasured(d));
 }
