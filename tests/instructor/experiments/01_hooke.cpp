@@ -47,7 +47,7 @@ testing::AssertionResult gradeDriftMeasured(const testing_util::ExperimentField&
     testing::AssertionResult physics = theoryDrift(d.setting, &theory);
     const testing_util::SceneRun run =
         testing_util::runScene(kScene_spring, "scenes/spring.json",
-                               {"solver.method=explicit_euler", "solver.setting=" + testing_util::num(d.setting), "solver.steps=" + std::to_string(stepsOf(d.setting))});
+                               {"solver.method=explicit_euler", "solver.dt=" + testing_util::num(d.setting), "solver.steps=" + std::to_string(stepsOf(d.setting))});
     const double own = run.metric("energy_drift");
     if (physics && std::abs(own - theory) > 1e-3 * std::abs(theory))
         physics = testing::AssertionFailure() << "your explicit Euler does not change the energy of the undamped spring as the method does "

@@ -38,7 +38,7 @@ testing::AssertionResult gradeDriftMeasured(const testing_util::ExperimentField&
     const double theory = theoryDrift(d.setting);
     const testing_util::SceneRun run = testing_util::runScene(
         kScene_pbd_curtain, "scenes/pbd_curtain.json",
-        {"cloth.pins=[]", "solver.setting=" + testing_util::num(d.setting), "solver.steps=" + std::to_string(stepsOf(d.setting))});
+        {"cloth.pins=[]", "solver.dt=" + testing_util::num(d.setting), "solver.steps=" + std::to_string(stepsOf(d.setting))});
     const double own = run.metric("energy_drift");
     testing::AssertionResult physics = testing::AssertionSuccess();
     if (std::abs(own - theory) > 1e-6 * std::abs(theory))

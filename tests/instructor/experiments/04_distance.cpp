@@ -48,7 +48,7 @@ testing::AssertionResult gradeStrainMeasured(const testing_util::ExperimentField
     const double theory = theoryStrain(st.setting);
     const testing_util::SceneRun run = testing_util::runScene(
         kScene_pbd_link, "scenes/pbd_link.json",
-        {"solver.setting=" + testing_util::num(st.setting), "solver.steps=" + std::to_string(std::llround(kSeconds / st.setting))});
+        {"solver.dt=" + testing_util::num(st.setting), "solver.steps=" + std::to_string(std::llround(kSeconds / st.setting))});
     const double own = run.metric("max_strain");
     testing::AssertionResult physics = projectionConservesMomentum();
     if (physics && std::abs(own - theory) > 0.01 * theory)
