@@ -1,6 +1,10 @@
 // `clothlab run`: one scene, headless, with the report of error metrics beside wall time.
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/io/report.h"
@@ -10,10 +14,34 @@
 #include "commands.h"
 
 namespace clothlab::cli {
+namespace {
+/// `--window T0,T1` (s): two numbers, 0 <= T0 <= T1, and the run (steps of dt) reaches T1.
+MetricWindow parseWindow(const std::string& text, double dt, long long steps) {
+    const auto bad = [&](const std::string& why) { return InputError("command line", "--window", "\"" + text + "\": " + why); };
+    const size_t comma = text.find(',');
+    if (comma == std::string::npos) throw bad("expected T0,T1 in s, e.g. --window 2,3");
+    MetricWindow w;
+    const std::string parts[2] = {text.substr(0, comma), text.substr(comma + 1)};
+    double* into[2] = {&w.from, &w.to};
+    for (int i = 0; i < 2; ++i) {
+        char* end = nullptr;
+        *into[i] = std::strtod(parts[i].c_str(), &end);
+        if (parts[i].empty() || *end != '\0' || !std::isfinite(*into[i])) throw bad("\"" + parts[i] + "\" is not a number");
+    }
+    if (w.from < 0 || w.to < w.from) throw bad("needs 0 <= T0 <= T1");
+    const double end = static_cast<double>(steps) * dt;
+    if (!w.contains(end) && w.to > end) {
+        std::ostringstream s;
+        s << "the run ends at t = " << end << " s (--steps, --seconds or solver.steps)";
+        throw bad(s.str());
+    }
+    return w;
+}
+}  // namespace
 
 void addRunCommand(CLI::App& app, int& exit_code) {
     struct Options {
-        std::string scene, dump, out, state;
+        std::string scene, dump, out, state, window;
         std::vector<std::string> sets;
         long long steps = -1, every = 0;
         double seconds = -1;
@@ -29,6 +57,8 @@ void addRunCommand(CLI::App& app, int& exit_code) {
     cmd->add_option("--dump", opt->dump, "Write the final state as CSV (i,x,y,z,vx,vy,vz), 17 significant digits");
     cmd->add_option("--state", opt->state, "Start from the positions and velocities of a state CSV (from --dump or state.csv); time starts at 0");
     cmd->add_option("--out", opt->out, "Folder for report.csv, summary.json and state.csv");
+    cmd->add_option("--window", opt->window,
+                    "T0,T1: also summarise every metric (min, mean, max) over the states with t in [T0, T1] s, every step");
     cmd->add_flag("--quiet", opt->quiet, "Print only the summary");
     cmd->add_flag("--strict", opt->strict,
                   "A warning (a pinned particle moved, not converged, penetration, fell through a collider, energy growth) stops the run: exit 3 like a blow-up");
@@ -39,6 +69,8 @@ void addRunCommand(CLI::App& app, int& exit_code) {
         long long every = opt->every > 0 ? opt->every : scene.report.every;
         if (every <= 0) every = std::max<long long>(1, steps / 10);
 
+        const std::optional<MetricWindow> window =
+            opt->window.empty() ? std::nullopt : std::optional<MetricWindow>(parseWindow(opt->window, scene.solver.dt, steps));
         auto sim = makeSimulation(scene);
         if (!opt->state.empty()) {
             if (singleSpringAnalytic(scene))  // its report compares with the exact solution from t = 0
@@ -57,7 +89,7 @@ void addRunCommand(CLI::App& app, int& exit_code) {
                 if (!header) printReportHeader(std::cout, row), header = true;
                 printReportRow(std::cout, row);
             },
-            opt->strict);
+            opt->strict, window ? &*window : nullptr);
         printSummary(std::cout, *sim, result);
         if (!opt->out.empty()) {
             std::filesystem::create_directories(opt->out);
