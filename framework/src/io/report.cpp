@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clothlab/core/input_error.h"
+#include "clothlab/sim/scene_checks.h"
 
 namespace clothlab {
 namespace {
@@ -59,6 +60,17 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
                       "m", r.worst_penetration_step);
         out << buf;
     }
+    const LookChecks look = lookChecks(sim);  // what the picture shows, at the end (sim/scene_checks.h)
+    if (look.through_applies) {
+        std::snprintf(buf, sizeof buf, "  %-22s %14d of %d cloth triangles through a collider's surface (at the end)\n", "triangles_through",
+                      look.through, look.triangles);
+        out << buf;
+    }
+    if (look.flips_applies) {
+        std::snprintf(buf, sizeof buf, "  %-22s %14d of %d cloth triangles turned against the rest shape's normal (at the end)\n",
+                      "turned_over", look.flips.flipped, look.flips.triangles);
+        out << buf;
+    }
     if (!r.warnings.empty()) {
         out << "warnings (" << r.warnings.size() << "): do not trust the numbers above; each warning says why and what would help\n";
         for (const RunWarning& w : r.warnings) out << "  warning: " << warningText(w, sim.scene()) << "\n";
@@ -104,6 +116,9 @@ void writeSummaryJson(const std::string& path, const Simulation& sim, const RunR
         for (const Metric& m : r.rows.back().metrics) j["metrics"][m.name] = {{"value", m.value}, {"unit", m.unit}};
     if (!sim.scene().colliders.empty())
         j["metrics"]["worst_penetration"] = {{"value", r.worst_penetration}, {"unit", "m"}, {"step", r.worst_penetration_step}};
+    const LookChecks look = lookChecks(sim);
+    if (look.through_applies) j["metrics"]["triangles_through"] = {{"value", look.through}, {"unit", "1"}, {"of", look.triangles}};
+    if (look.flips_applies) j["metrics"]["turned_over"] = {{"value", look.flips.flipped}, {"unit", "1"}, {"of", look.flips.triangles}};
     j["notes"] = r.notes;
     j["warnings"] = nlohmann::json::array();
     for (const RunWarning& w : r.warnings) {
