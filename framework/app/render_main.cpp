@@ -1,7 +1,8 @@
 // clothlab-render (OSMesa) and clothlab-render-egl (EGL surfaceless): offscreen pictures, no display
 // needed. One source, two programs: each links one backend of render/offscreen.h; ./lab picks one.
 //   render SCENE [--seconds T] [--fps F] --out DIR [--video FILE.mp4]   frames of a simulated scene
-//   gui [SCENE] --screenshot FILE.png [--frames N]                       the whole app, panels included
+//   gui [SCENE] --screenshot FILE.png [--frames N] [--compare a,b] [--status F.json] [--timings]
+//                                                                        the whole app, panels included
 //   bench [--n 32] [--frames 60]                                         app frames per second on an n x n cloth
 //   probe                                                                can this backend make a context here?
 // Each run prints one line "renderer: OSMesa (llvmpipe)" or "renderer: EGL surfaceless (llvmpipe)";
@@ -15,11 +16,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/sim/run.h"
+#include "clothlab/sim/scene_checks.h"
 #include "clothlab/core/not_implemented.h"
 #include "clothlab/core/stub_advice.h"
 #include "clothlab/gui/app.h"
@@ -130,6 +133,7 @@ int runRender(const RenderArgs& a) {
         }
         if (result.unstable) break;
         shots.push_back(makeDrawData(*sim));
+        shots.back().note = lookChecksLine(lookChecks(*sim));  // what the picture shows, by numbers (sim/scene_checks.h)
     }
     result.wall = seconds(t0, Clock::now());
     if (!result.unstable) checks.finish(*sim);
@@ -190,9 +194,9 @@ int runRender(const RenderArgs& a) {
 
 // ---- gui --screenshot and bench ----------------------------------------------------------------
 struct GuiArgs {
-    std::string scene, screenshot, scenes = CLOTHLAB_SCENES_DIR, size = "1280x800";
+    std::string scene, screenshot, scenes = CLOTHLAB_SCENES_DIR, size = "1280x800", compare, status;
     int frames = 30, wave = 0, edges = -1;
-    bool strain = false;
+    bool strain = false, timings = false;
     std::vector<std::string> sets;
 };
 
@@ -208,24 +212,40 @@ int runGui(const GuiArgs& a) {
     o.edges = a.edges;
     o.strain = a.strain;
     o.sets = a.sets;
+    o.compare = a.compare;
+    o.timing = a.timings;
     App app(o);
     // The first frames build the font texture and lay out the panel; time the rest.
     const int warm = 3, frames = std::max(a.frames, warm + 1);
     auto t0 = Clock::now();
+    double imgui_ms = 0;
     for (int f = 0; f < frames; ++f) {
-        if (f == warm) t0 = Clock::now();
+        if (f == warm) t0 = Clock::now(), app.resetTimings(), imgui_ms = 0;
         gui.begin(1.0 / 60);
         app.frame(W, H);
+        const auto r0 = Clock::now();
         gui.end();
         glFinish();
+        imgui_ms += 1e3 * seconds(r0, Clock::now());
     }
     const Image img = ctx->read();
     const double s = seconds(t0, Clock::now()), n = frames - warm;
     std::cout << "app frame " << W << "x" << H << (a.wave > 1 ? ", " + std::to_string(a.wave) + "x" + std::to_string(a.wave) + " cloth" : "")
                   << ": " << 1000 * s / n << " ms per frame (" << n / s << " fps, " << ctx->description() << ")\n";
+    if (a.timings) {  // where the frame's time goes (docs/performance.md)
+        const AppTimings& t = app.timings();
+        std::printf("  simulate %.2f ms, draw data %.2f ms, draw %.2f ms, panel %.2f ms, imgui render %.2f ms (per frame)\n",
+                    t.simulate / n, t.draw_data / n, t.draw / n, t.panel / n, imgui_ms / n);
+        for (const RenderPassTime& p : app.renderer().passTimes()) std::printf("    draw: %-22s %.2f ms\n", p.name, p.ms / n);
+    }
     if (!a.screenshot.empty()) {
         writePng(a.screenshot, img);
         std::cout << "wrote " << a.screenshot << " (" << W << "x" << H << ", " << a.frames << " frames)\n";
+    }
+    if (!a.status.empty()) {
+        std::ofstream out(a.status);
+        if (!(out << app.statusJson() << "\n")) throw InputError(a.status, "(file)", "cannot write the file");
+        std::cout << "wrote " << a.status << "\n";
     }
     if (!app.message().empty()) std::cout << "panel message: " << app.message() << "\n";
     for (const std::string& w : app.warnings()) std::cout << "panel " << w << "\n";
@@ -263,6 +283,9 @@ int main(int argc, char** argv) {
     g->add_option("--size", ga.size, "Window size WIDTHxHEIGHT");
     g->add_flag_callback("--edges", [&] { ga.edges = 1; }, "Start with the spring/constraint overlay shown");
     g->add_flag("--strain", ga.strain, "Start with the overlay coloured by strain");
+    g->add_option("--compare", ga.compare, "Run 2 to 4 variants side by side, e.g. pbd,xpbd or pbd:iterations=5,pbd:iterations=50");
+    g->add_option("--status", ga.status, "Also write what the last frame showed as JSON (runs, their views and labels, cut text)");
+    g->add_flag("--timings", ga.timings, "Print where the frame's time goes (simulation, renderer passes, panel, ImGui)");
     g->callback([&] { code = runGui(ga); });
 
     GuiArgs ba;
@@ -274,6 +297,7 @@ int main(int argc, char** argv) {
     b->add_option("--screenshot", ba.screenshot, "Also save the last frame");
     b->add_flag_callback("--edges", [&] { ba.edges = 1; }, "Draw the spring/constraint overlay too");
     b->add_flag("--strain", ba.strain, "Draw the overlay coloured by strain");
+    b->add_flag("--timings", ba.timings, "Print where the frame's time goes");
     b->callback([&] {
         if (ba.wave == 0) ba.wave = 32;
         code = runGui(ba);

@@ -4,7 +4,9 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <utility>
 
@@ -125,9 +127,35 @@ Eigen::Vector3f strainColor(double strain, double range) {
     return s >= 0 ? Eigen::Vector3f(mid + s * (red - mid)) : Eigen::Vector3f(mid - s * (blue - mid));
 }
 
-void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height) {
-    glViewport(0, 0, width, height);
+void Renderer::lap(const char* pass) {
+    if (!timing_) return;
+    glFinish();
+    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    if (pass) {
+        auto it = std::find_if(times_.begin(), times_.end(), [&](const RenderPassTime& t) { return std::strcmp(t.name, pass) == 0; });
+        if (it == times_.end()) times_.push_back({pass, 0.0}), it = times_.end() - 1;
+        it->ms += 1e3 * (now - lap_);
+    }
+    lap_ = now;
+}
+
+void Renderer::clear(int width, int height) {
     glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, width, height);
+    glClearColor(0.93f, 0.94f, 0.96f, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height) {
+    draw(d, cam, opt, Viewport{0, 0, width, height}, height);
+}
+
+void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, const Viewport& vp, int fb_height) {
+    lap(nullptr);
+    const int width = vp.width, height = vp.height;
+    glViewport(vp.x, fb_height - vp.y - vp.height, width, height);
+    glScissor(vp.x, fb_height - vp.y - vp.height, width, height);
+    glEnable(GL_SCISSOR_TEST);  // clear and draw only this part of the framebuffer
     glDisable(GL_DITHER);
     glClearColor(0.93f, 0.94f, 0.96f, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -151,6 +179,7 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     glVertex2f(-1, 1);
     glEnd();
 
+    lap("background");
     lights();  // in eye space, before the view matrix
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
@@ -247,6 +276,7 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
         glDisable(GL_BLEND);
     }
 
+    lap("ground and shadow");
     // Colliders.
     if (opt.colliders) {
         glEnable(GL_LIGHTING);
@@ -261,8 +291,11 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
         glDisable(GL_LIGHTING);
     }
 
+    lap("colliders");
     if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
+    lap("cloth");
     if (opt.edges || d.triangles.empty()) drawEdges(d, opt, scale);
+    lap("edges");
     drawParticles(d, opt, scale);
 
     // Planes other than the ground: translucent panels with a border, drawn last so what lies behind shows.
@@ -291,7 +324,9 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
+    glDisable(GL_SCISSOR_TEST);
     glFinish();
+    lap("particles and planes");
 }
 
 void Renderer::triangleIndices(const DrawData& d, std::vector<unsigned>& idx) {

@@ -43,6 +43,21 @@ struct RenderOptions {
     double ground_y = std::nan("");  ///< height of the ground grid, m (NaN: below the lowest point of this frame)
 };
 
+/// A rectangle of the framebuffer to draw into, in pixels, origin at the top-left corner (as the
+/// mouse and Camera::project() count).
+struct Viewport {
+    int x = 0;       ///< left edge, pixels
+    int y = 0;       ///< top edge, pixels
+    int width = 0;   ///< width, pixels
+    int height = 0;  ///< height, pixels
+};
+
+/// Wall time of one pass of Renderer::draw(), summed over the frames since Renderer::resetTimes().
+struct RenderPassTime {
+    const char* name;   ///< "background", "ground and shadow", "colliders", "cloth", "edges", "particles"
+    double ms = 0.0;    ///< milliseconds, summed
+};
+
 /// Draws DrawData with a camera. Holds the few GL objects it creates (the cloth texture),
 /// so use one Renderer per GL context.
 class Renderer {
@@ -55,6 +70,27 @@ public:
     /// @param width, height  viewport size in pixels
     void draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height);
 
+    /// The same into a part of the framebuffer (a split view): only `vp` is cleared and drawn, with
+    /// the projection of its own aspect ratio vp.width / vp.height.
+    /// @param d          what to draw
+    /// @param cam        camera
+    /// @param opt        options
+    /// @param vp         the rectangle, pixels from the top-left corner
+    /// @param fb_height  the framebuffer's height, pixels
+    void draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, const Viewport& vp, int fb_height);
+
+    /// Clears the whole framebuffer (colour and depth) to the background's light grey, e.g. before split views.
+    /// @param width, height  framebuffer size in pixels
+    void clear(int width, int height);
+
+    /// Times each pass of draw() (glFinish() after each, which costs a little: for measuring only).
+    /// @param on  time from now on, or stop
+    void setTiming(bool on) { timing_ = on; }
+    /// The passes' times since the last resetTimes() (empty unless setTiming(true)).
+    const std::vector<RenderPassTime>& passTimes() const { return times_; }
+    /// Sets the passes' times to zero.
+    void resetTimes() { times_.clear(); }
+
 private:
     void drawSurface(const DrawData& d, double scale);
     void drawEdges(const DrawData& d, const RenderOptions& opt, double scale);
@@ -62,6 +98,11 @@ private:
     /// The cloth's triangles as indices into its particles (3 per triangle).
     static void triangleIndices(const DrawData& d, std::vector<unsigned>& idx);
 
+    void lap(const char* pass);   ///< with timing: glFinish(), then books the time since the last lap on `pass`
+
+    bool timing_ = false;         ///< setTiming()
+    std::vector<RenderPassTime> times_;  ///< passTimes()
+    double lap_ = 0.0;            ///< the time of the last lap, s (steady clock)
     unsigned texture_ = 0;        ///< checker texture of the cloth (0: not created yet)
     TriangleList scratch_;        ///< the cloth or its shadow, rebuilt every frame
     std::vector<float> lines_;    ///< scratch: line or point vertices, 3 floats each
