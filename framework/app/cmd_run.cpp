@@ -46,7 +46,9 @@ int runCompare(const std::string& file, const std::vector<std::string>& sets, co
         std::cout << buf;
         if (!r.message.empty()) std::cout << "  " << r.variant.label << " stopped: " << r.message << "\n";
     }
-    std::filesystem::create_directories(out);
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec) throw InputError(out, "(folder)", "cannot create the folder (" + ec.message() + ")");
     writeCompareCsv(out + "/compare.csv", c);
     const std::string png = plotCompare(out, c, std::filesystem::path(file).filename().string() + ": " + list);
     std::cout << "wrote " << out << "/compare.csv" << (png.empty() ? "" : " and " + png) << "\n";

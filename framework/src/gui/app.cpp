@@ -132,6 +132,7 @@ void setupImGuiStyle() {
     st.WindowBorderSize = 0;
     st.Colors[ImGuiCol_WindowBg].w = 0.92f;
     st.AntiAliasedLinesUseTex = false;  // only glyphs use the font texture: clippedText() finds cut text by it
+    st.AntiAliasedFill = false;  // rounded corners without a blended fringe: less for llvmpipe to draw (docs/performance.md)
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // no imgui.ini next to the user's files
     // A readable font when Debian's fonts-dejavu-core is installed; else ImGui's built-in one.
@@ -191,7 +192,7 @@ App::App(const AppOptions& options) : options_(options) {
     std::sort(scenes_.begin(), scenes_.end());
     playing_ = options_.play;
     view_.edges = false;
-    renderer_.setTiming(options_.timing);
+    renderer_.setTiming(options_.timing, options_.cpu_clock);
     if (!options_.compare.empty() && options_.scene.empty())
         throw InputError("command line", "--compare", "needs a scene file, e.g. ./lab gui scenes/pbd_sphere.json --compare pbd,xpbd");
     const std::string first = !options_.scene.empty() ? options_.scene : (scenes_.empty() ? "" : scenes_.front());
@@ -318,7 +319,14 @@ void App::advance(double frame_seconds) {
     target_t_ = std::min(target_t_, cmp_->time()) + speed_ * frame_seconds;
     // The stepping gets what is left of a frame at 30 fps after the rest of the last frames took theirs
     // (at least 5 ms, at most 40 ms): a scene too costly to step in real time runs slower, at 30 fps.
-    const double budget = std::clamp((1000.0 / kFrameRate - other_ms_) / 1e3, 0.005, 0.04);
+    const double budget = options_.step_budget > 0 ? options_.step_budget : std::clamp((1000.0 / kFrameRate - other_ms_) / 1e3, 0.005, 0.04);
+    // One step may outlast the budget (a step is never cut): the frames after it draw without stepping
+    // until that is paid back, so a scene with long steps still draws at 30 fps, its runs slower.
+    if (debt_ > 0) {
+        debt_ -= budget;
+        return;
+    }
+    const auto start = Clock::now();
     try {
         cmp_->advanceTo(target_t_, budget, [this](CompareRun& r) {
             if (grabbed_ < 0 || &r != &cmp_->runs()[static_cast<size_t>(grabbed_run_)]) return;
@@ -333,6 +341,7 @@ void App::advance(double frame_seconds) {
         message_ = std::string("error: ") + e.what();
         playing_ = false;
     }
+    if (options_.step_budget <= 0) debt_ = std::max(0.0, std::chrono::duration<double>(Clock::now() - start).count() - budget);
     if (!compareMode() && !cmp_->runs().empty() && cmp_->runs().front().message.rfind("unstable", 0) == 0 && message_.empty()) {
         message_ = cmp_->runs().front().message + ": reduce dt or stiffness, then Reset";
         playing_ = false;
@@ -478,20 +487,21 @@ void App::frame(int width, int height) {
     if (frames_ > 0) {  // the last frame: how long it took besides stepping, how fast the runs went
         const double interval = std::chrono::duration<double, std::milli>(t0 - last_frame_).count();
         other_ms_ = frames_ == 1 ? interval - simulate_ms_ : 0.9 * other_ms_ + 0.1 * std::max(0.0, interval - simulate_ms_);
+        // Over the last frame: the simulated time the runs advanced against what the frame asked for
+        // (speed x the frame's time step, ImGui's DeltaTime: the wall time between frames in a window).
         const double advanced = cmp_ ? cmp_->time() - last_time_ : 0.0;
-        if (playing_ && interval > 0) realtime_ = 0.9 * realtime_ + 0.1 * advanced / (interval / 1e3);
+        if (playing_ && asked_ > 0) realtime_ = 0.9 * realtime_ + 0.1 * speed_ * advanced / asked_;  // a step may pass the frame's time: no cap here
     }
     last_frame_ = t0;
-    ++frames_;
-    const double frame_seconds = std::min(1.0 / 20, static_cast<double>(ImGui::GetIO().DeltaTime));
-    advance(frame_seconds);
-    if (playing_) wave_t_ += frame_seconds;
     last_time_ = cmp_ ? cmp_->time() : 0.0;
-    simulate_ms_ = msSince(t0);
-    timings_.simulate += simulate_ms_;
+    ++frames_;
     layout(width, height);
     if (!camera_set_) fitCamera(width, height);
     handleMouse(width, height);
+    // Draw the runs as they are, then step them while the GL draws (llvmpipe rasterizes on its own
+    // threads after the renderer's glFlush()): the picture is one frame behind the panel's numbers.
+    const auto cpu = [this] { return options_.timing && options_.cpu_clock ? 1e3 * options_.cpu_clock() : 0.0; };
+    double c0 = cpu();
     t0 = Clock::now();
     std::vector<DrawData> shown;
     for (size_t i = 0; i < views_.size(); ++i) shown.push_back(drawData(i));
@@ -500,6 +510,15 @@ void App::frame(int width, int height) {
     if (compareMode()) renderer_.clear(width, height);  // between and beside the views too
     for (size_t i = 0; i < views_.size(); ++i) renderer_.draw(shown[i], cam_, view_, views_[i], height);
     timings_.draw += msSince(t0);
+    timings_.cpu_draw += cpu() - c0, c0 = cpu();
+    t0 = Clock::now();
+    const double frame_seconds = std::min(1.0 / 20, static_cast<double>(ImGui::GetIO().DeltaTime));
+    asked_ = speed_ * frame_seconds;
+    advance(frame_seconds);
+    if (playing_) wave_t_ += frame_seconds;
+    simulate_ms_ = msSince(t0);
+    timings_.simulate += simulate_ms_;
+    timings_.cpu_simulate += cpu() - c0;
     if (save_view_) {
         // The 3-D views without the panel, as drawn just now.
         save_view_ = false;
@@ -511,7 +530,17 @@ void App::frame(int width, int height) {
             message_ = std::string("error: ") + e.what();
         }
     }
+    // The panel's and the plots' backgrounds as cleared rectangles: ImGui draws them without its own
+    // (a blended, textured fill of every pixel, the largest part of its cost on llvmpipe).
+    const float scale = ImGui::GetIO().DisplaySize.y > 0 ? height / ImGui::GetIO().DisplaySize.y : 1.0f;
+    const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+    const Eigen::Vector3f panel_rgb(bg.x, bg.y, bg.z);
+    renderer_.fill({static_cast<int>(8 * scale), static_cast<int>(8 * scale), static_cast<int>(kPanelWidth * scale),
+                    static_cast<int>(height - 16 * scale)},
+                   height, panel_rgb);
+    if (compareMode()) renderer_.fill(plots_rect_, height, panel_rgb);
     t0 = Clock::now();
+    c0 = cpu();
     panel(width, height);
     if (compareMode()) {
         comparePlots(width, height);
@@ -521,6 +550,7 @@ void App::frame(int width, int height) {
         drawOverlay(shown.front(), view_, 360.0f);
     }
     timings_.panel += msSince(t0);
+    timings_.cpu_panel += cpu() - c0;
     ++timings_.frames;
 }
 
@@ -533,7 +563,8 @@ void App::panel(int /*width*/, int height) {
     const float scale = ImGui::GetIO().DisplaySize.y > 0 ? ImGui::GetIO().DisplaySize.y / height : 1.0f;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, height * scale - 16), ImGuiCond_Always);
-    ImGui::Begin(kRunWindow, nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::Begin(kRunWindow, nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
     ImGui::PushItemWidth(190);
     if (!message_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kRed);
@@ -830,16 +861,17 @@ void App::panelStages() {
     }
 }
 
-// The samples of run r as plot lines: x and y of the last kHistory samples, every second one (a plot
-// is narrower than 300 pixels), and the last.
+// The samples of run r as plot lines: x and y of the last kHistory samples, at most kPlotPoints of
+// them evenly spread (a plot is a few hundred pixels wide; each point is a stroke for llvmpipe), and the last.
 namespace {
+constexpr size_t kPlotPoints = 150;
 PlotLine lineOf(const CompareRun& r, size_t i, double (*x)(const CompareSample&), double (*y)(const CompareSample&)) {
     PlotLine l;
     l.color = runColor(i);
     l.label = r.variant.label;
-    const size_t n = r.samples.size(), first = n > kHistory ? n - kHistory : 0;
-    for (size_t k = first; k < n; k += 2) l.x.push_back(x(r.samples[k])), l.y.push_back(y(r.samples[k]));
-    if (n > first && (n - 1 - first) % 2) l.x.push_back(x(r.samples.back())), l.y.push_back(y(r.samples.back()));
+    const size_t n = r.samples.size(), first = n > kHistory ? n - kHistory : 0, stride = std::max<size_t>(1, (n - first + kPlotPoints - 1) / kPlotPoints);
+    for (size_t k = first; k < n; k += stride) l.x.push_back(x(r.samples[k])), l.y.push_back(y(r.samples[k]));
+    if (n > first && (n - 1 - first) % stride) l.x.push_back(x(r.samples.back())), l.y.push_back(y(r.samples.back()));
     return l;
 }
 double sampleT(const CompareSample& s) { return s.t; }
@@ -872,7 +904,7 @@ void App::comparePlots(int /*width*/, int height) {
     ImGui::SetNextWindowSize(ImVec2(plots_rect_.width * scale, plots_rect_.height * scale), ImGuiCond_Always);
     ImGui::Begin(kPlotWindow, nullptr,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar |
-                     ImGuiWindowFlags_NoCollapse);
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
     const CompareMeasure& m = cmp_->measure();
     const auto lines = [&](double (*x)(const CompareSample&), double (*y)(const CompareSample&)) {
         std::vector<PlotLine> out;
@@ -962,7 +994,7 @@ std::string App::statusJson() const {
     j["look"] = scene_.view.look;
     j["playing"] = playing_;
     j["time"] = cmp_ ? cmp_->time() : 0.0;
-    j["realtime"] = realtime_;
+    j["realtime"] = std::min(realtime_, speed_);
     j["message"] = message_;
     j["compare"] = compareMode();
     if (cmp_) j["measure"] = {{"name", cmp_->measure().name}, {"unit", cmp_->measure().unit}};

@@ -78,7 +78,7 @@ void plotLines(const PlotAxes& axes, const std::vector<PlotLine>& lines, float w
         }
     };
     if (!empty) pad(x0, x1, axes.logx), pad(y0, y1, axes.logy);
-    const std::vector<double> yt = empty ? std::vector<double>{} : niceTicks(y0, y1, std::max(2, static_cast<int>(height / (3 * lh))), axes.logy);
+    const std::vector<double> yt = empty ? std::vector<double>{} : niceTicks(y0, y1, std::max(3, static_cast<int>(height / (3 * lh))), axes.logy);
     float ylabel_w = 0;
     const double ystep = !axes.logy && yt.size() > 1 ? yt[1] - yt[0] : 0.0;
     for (double v : yt) ylabel_w = std::max(ylabel_w, ImGui::CalcTextSize(tickLabel(v, ystep).c_str()).x);

@@ -161,6 +161,7 @@ void Comparison::stepRun(size_t i) {
 void Comparison::sample() {
     for (CompareRun& r : runs_) {
         if (!r.sim) continue;
+        if (r.stopped() && !r.samples.empty() && r.samples.back().steps == r.steps) continue;  // its last sample is taken
         CompareSample s;
         s.t = r.sim->state().t;
         s.wall = r.wall;
@@ -219,33 +220,51 @@ void writeCompareCsv(const std::string& path, const Comparison& c) {
 
 std::string plotCompare(const std::string& dir, const Comparison& c, const std::string& title) {
     const CompareMeasure& m = c.measure();
-    const std::string& unit = m.unit;
+    // compare.dat: one block per run (gnuplot's `index i`), columns t, wall, measure, energy, max strain.
+    {
+        std::ofstream d(dir + "/compare.dat");
+        if (!d) throw InputError(dir + "/compare.dat", "(file)", "cannot write the file");
+        d << std::setprecision(10);
+        for (const CompareRun& r : c.runs()) {
+            d << "# " << r.variant.label << ": t [s], wall [s], " << m.name << " [" << m.unit << "], energy [J], max_strain [1]\n";
+            for (const CompareSample& x : r.samples) d << x.t << " " << x.wall << " " << x.error << " " << x.energy << " " << x.max_strain << "\n";
+            d << "\n\n";
+        }
+    }
+    // The energy axis spans the runs that did not stop (a blow-up would flatten the others), when some did.
+    double lo = INFINITY, hi = -INFINITY;
+    bool stopped = false, strain = false;  // a spring has no edges: no strain panel
+    for (const CompareRun& r : c.runs()) {
+        stopped = stopped || r.stopped();
+        for (const CompareSample& x : r.samples) {
+            strain = strain || std::isfinite(x.max_strain);
+            if (!r.stopped() && std::isfinite(x.energy)) lo = std::min(lo, x.energy), hi = std::max(hi, x.energy);
+        }
+    }
     std::ostringstream s;
     s << "cd '" << dir << "'\nset terminal pngcairo size 1280,800 font ',11'\nset output 'compare.png'\n"
-      << "set datafile separator ','\nset datafile missing 'nan'\nset grid\nset key top right font ',10' noenhanced\n"
-      << "set multiplot layout 2,2 title '" << title << "' noenhanced\n";
-    // A row belongs to run i when its first column is run i's label (strcol(1) eq '...').
-    const auto col = [&](size_t i, const std::string& expr) {
-        return "(strcol(1) eq '" + c.runs()[i].variant.label + "' && $2 > 0 ? " + expr + " : NaN)";
-    };
-    // 1: error against wall time per simulated second.
-    s << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-      << "set xlabel 'wall time per simulated second [s/s]'\nset ylabel '" << m.name << " [" << unit << "]' noenhanced\n"
-      << "set title 'error against run time (each run: its samples, left to right as it runs)'\nplot ";
-    for (size_t i = 0; i < c.runs().size(); ++i)
-        s << (i ? ", \\\n     " : "") << "'compare.csv' every ::1 using " << col(i, "$3/$2") << ":(abs($4)) with linespoints lw 2 pt 7 ps 0.4 lc rgb '"
-          << compareColor(i) << "' title '" << c.runs()[i].variant.label << "'";
-    s << "\nunset logscale xy\nset format x '%g'\nset format y '%g'\nset xlabel 'simulated time t [s]'\n";
-    const auto over_t = [&](const std::string& ylabel, const std::string& column, const std::string& what) {
-        s << "set ylabel '" << ylabel << "' noenhanced\nset title '" << what << "' noenhanced\nplot ";
+      << "set grid\nset key top right font ',10' noenhanced\nset multiplot layout 2,2 title '" << title << "' noenhanced\n";
+    const auto plot = [&](const std::string& using_, const std::string& style) {
+        s << "plot ";
         for (size_t i = 0; i < c.runs().size(); ++i)
-            s << (i ? ", \\\n     " : "") << "'compare.csv' every ::1 using 2:" << col(i, "$" + column) << " with lines lw 2 lc rgb '" << compareColor(i)
-              << "' title '" << c.runs()[i].variant.label << "'";
+            s << (i ? ", \\\n     " : "") << "'compare.dat' index " << i << " using " << using_ << " with " << style << " lw 2 lc rgb '"
+              << compareColor(i) << "' title '" << c.runs()[i].variant.label << "'";
         s << "\n";
     };
-    over_t(m.name + " [" + unit + "]", "4", m.name + " against simulated time");
-    over_t("energy [J]", "5", "energy");
-    over_t("max strain [1]", "6", "max strain");
+    const std::string ylabel = m.name + " [" + m.unit + "]";
+    s << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset xlabel 'wall time per simulated second [s/s]'\n"
+      << "set ylabel '" << ylabel << "' noenhanced\nset title 'error against run time: left is cheaper, lower is more accurate'\n";
+    plot("($1 > 0 ? $2/$1 : NaN):(abs($3))", "linespoints pt 7 ps 0.5");
+    s << "unset logscale x\nset format x '%g'\nset xlabel 'simulated time t [s]'\nset title '" << m.name << " against simulated time' noenhanced\n";
+    plot("1:(abs($3))", "lines");
+    s << "unset logscale y\nset format y '%g'\nset ylabel 'energy [J]'\nset title 'energy" << (stopped ? " (of the runs that did not stop)" : "") << "'\n";
+    if (stopped && std::isfinite(lo)) s << "set yrange [" << lo - 0.1 * (hi - lo + 1e-9) << ":" << hi + 0.1 * (hi - lo + 1e-9) << "]\n";
+    plot("1:4", "lines");
+    s << "set autoscale y\n";
+    if (strain) {
+        s << "set ylabel 'max strain [1]'\nset title 'max strain'\n";
+        plot("1:5", "lines");
+    }
     s << "unset multiplot\n";
     return runGnuplot(dir + "/compare.gp", s.str()) ? dir + "/compare.png" : "";
 }

@@ -45,7 +45,11 @@ struct AppOptions {
     std::function<std::unique_ptr<Simulation>(const Scene&)> factory;
     int wave_grid = 0;        ///< > 0: benchmark mode, show an n x n cloth moved by a travelling wave instead of a simulation
     bool timing = false;      ///< time the frame's parts (App::timings(); the renderer's passes with glFinish() between them)
+    std::function<double()> cpu_clock;  ///< with timing: the process's CPU time, s, for the CPU columns of AppTimings
     std::string out_dir = "."; ///< where "Export CSV + PNG" writes its folders clothlab_compare_N
+    /// Wall time a frame may spend stepping, s; 0: what a 30 fps frame leaves after the rest of the last
+    /// frames (at least 5 ms, at most 40 ms). A measurement of the cost of real time sets it high.
+    double step_budget = 0.0;
 };
 
 /// Wall time of the parts of the app's frames, summed since App::resetTimings(), ms.
@@ -55,6 +59,9 @@ struct AppTimings {
     double draw_data = 0.0;    ///< copying the states into DrawData (makeDrawData())
     double draw = 0.0;         ///< the renderer (all views; Renderer::passTimes() splits it)
     double panel = 0.0;        ///< building the ImGui windows (panel, plots, labels)
+    double cpu_simulate = 0.0; ///< CPU time of the stepping, every thread (AppOptions::cpu_clock)
+    double cpu_draw = 0.0;     ///< CPU time of drawing the data and the views, every thread (the GL's that ran meanwhile too)
+    double cpu_panel = 0.0;    ///< CPU time of building the ImGui windows
 };
 
 /// The app's look: Dear ImGui's light colours, rounded corners, readable on a projector.
@@ -186,8 +193,10 @@ private:
     std::chrono::steady_clock::time_point last_frame_;  ///< when the last frame began
     double simulate_ms_ = 0.0;           ///< the last frame's stepping, ms
     double other_ms_ = 0.0;              ///< the rest of a frame (drawing, panel, ImGui, the host), smoothed, ms
-    double last_time_ = 0.0;             ///< the runs' simulated time after the last frame's stepping, s
-    double realtime_ = 1.0;              ///< simulated seconds per wall second, smoothed (the panel says when below speed)
+    double last_time_ = 0.0;             ///< the runs' simulated time when the last frame began, s
+    double debt_ = 0.0;                  ///< stepping time beyond the budget not yet paid back by frames without steps, s
+    double asked_ = 0.0;                 ///< the simulated time the last frame asked the runs to advance, s
+    double realtime_ = 1.0;              ///< speed x the fraction of it they advanced, smoothed (the panel says when well below speed)
 };
 
 }  // namespace clothlab

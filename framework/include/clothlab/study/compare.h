@@ -119,7 +119,7 @@ public:
     /// Steps run i once (the app's Step button), with the same checks.
     /// @param i  the run
     void stepRun(size_t i);
-    /// Appends a sample (CompareSample) to every run with a simulation.
+    /// Appends a sample (CompareSample) to every run with a simulation (to a stopped one once, where it stopped).
     void sample();
     /// The lowest simulated time of the runs that can go on (the common time; else the highest), s.
     double time() const;
@@ -143,10 +143,11 @@ private:
 /// @throws InputError if the file cannot be written
 void writeCompareCsv(const std::string& path, const Comparison& c);
 
-/// Draws compare.png with gnuplot from the CSV beside it (writeCompareCsv() first): the error measure
-/// against the wall time per simulated second (log-log, one line per run, its last point marked),
-/// and the error measure, energy and max strain against simulated time.
-/// @param dir    folder with compare.csv; compare.gp and compare.png are written there
+/// Draws compare.png with gnuplot: the error measure against the wall time per simulated second
+/// (log-log, one line per run, a point per sample), and against simulated time (log), the energy (its
+/// axis spanning the runs that did not stop, when one did) and the max strain (when the scene has edges).
+/// The data go to compare.dat, one block per run (gnuplot's `index`).
+/// @param dir    folder; compare.dat, compare.gp and compare.png are written there
 /// @param c      the comparison (labels, measure)
 /// @param title  the figure's title, e.g. the scene file
 /// @return       the PNG written, or "" (gnuplot missing or failed: a note on stderr)
