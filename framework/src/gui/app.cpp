@@ -294,11 +294,10 @@ DrawData App::drawData(size_t i) const {
     return d;
 }
 
-void App::stepOnce() {
-    if (!cmp_) return;
+void App::guarded(const std::function<void()>& step) {
     try {
-        for (size_t i = 0; i < cmp_->runs().size(); ++i) cmp_->stepRun(i);
-    } catch (const NotImplemented& e) {
+        step();
+    } catch (const NotImplemented& e) {  // a stub: pause and name the task (and its stage, panelStages())
         message_ = e.what();
         stub_hit_ = e.what();
         playing_ = false;
@@ -306,6 +305,13 @@ void App::stepOnce() {
         message_ = std::string("error: ") + e.what();
         playing_ = false;
     }
+}
+
+void App::stepOnce() {
+    if (!cmp_) return;
+    guarded([this] {
+        for (size_t i = 0; i < cmp_->runs().size(); ++i) cmp_->stepRun(i);
+    });
     cmp_->sample();
 }
 
@@ -314,8 +320,8 @@ void App::advance(double frame_seconds) {
     bool running = false;
     for (const CompareRun& r : cmp_->runs()) running = running || !r.stopped();
     if (!running) return;
-    // The runs go to a common simulated time; a frame that cannot step that far (40 ms of stepping
-    // at most, to stay interactive) leaves them behind real time, together.
+    // The runs go to a common simulated time; a frame that cannot step that far leaves them behind
+    // real time, together.
     target_t_ = std::min(target_t_, cmp_->time()) + speed_ * frame_seconds;
     // The stepping gets what is left of a frame at 30 fps after the rest of the last frames took theirs
     // (at least 5 ms, at most 40 ms): a scene too costly to step in real time runs slower, at 30 fps.
@@ -327,20 +333,13 @@ void App::advance(double frame_seconds) {
         return;
     }
     const auto start = Clock::now();
-    try {
+    guarded([&] {
         cmp_->advanceTo(target_t_, budget, [this](CompareRun& r) {
             if (grabbed_ < 0 || &r != &cmp_->runs()[static_cast<size_t>(grabbed_run_)]) return;
             r.sim->state().v.col(grabbed_).setZero();
             r.checks.reset();  // the user moving a particle puts energy in and particles anywhere: the checks start again
         });
-    } catch (const NotImplemented& e) {
-        message_ = e.what();
-        stub_hit_ = e.what();
-        playing_ = false;
-    } catch (const std::exception& e) {
-        message_ = std::string("error: ") + e.what();
-        playing_ = false;
-    }
+    });
     if (options_.step_budget <= 0) debt_ = std::max(0.0, std::chrono::duration<double>(Clock::now() - start).count() - budget);
     if (!compareMode() && !cmp_->runs().empty() && cmp_->runs().front().message.rfind("unstable", 0) == 0 && message_.empty()) {
         message_ = cmp_->runs().front().message + ": reduce dt or stiffness, then Reset";

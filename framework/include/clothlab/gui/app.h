@@ -136,6 +136,7 @@ public:
 private:
     void rebuild(bool keep_state);
     void advance(double frame_seconds);
+    void guarded(const std::function<void()>& step);  ///< runs `step`; a stub or an error pauses and shows its message
     void handleMouse(int width, int height);
     void fitCamera(int width, int height);
     void layout(int width, int height);

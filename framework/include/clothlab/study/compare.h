@@ -17,8 +17,10 @@
 
 namespace clothlab {
 
-/// The fewest and the most runs of a comparison.
-constexpr int kCompareMin = 2, kCompareMax = 4;
+/// The fewest runs of a comparison.
+constexpr int kCompareMin = 2;
+/// The most runs of a comparison (the app's split view: two or three in a row, four as 2 x 2).
+constexpr int kCompareMax = 4;
 
 /// One variant of a comparison: its label and its solver; everything else is the scene's.
 struct CompareVariant {
