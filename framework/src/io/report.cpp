@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clothlab/core/input_error.h"
+#include "clothlab/sim/scene_checks.h"
 
 namespace clothlab {
 namespace {
@@ -57,6 +58,17 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
     if (!sim.scene().colliders.empty()) {
         std::snprintf(buf, sizeof buf, "  %-22s %14.6e %s (over the whole run, at step %lld)\n", "worst_penetration", r.worst_penetration,
                       "m", r.worst_penetration_step);
+        out << buf;
+    }
+    const LookChecks look = lookChecks(sim);  // what the picture shows, at the end (sim/scene_checks.h)
+    if (look.through_applies) {
+        std::snprintf(buf, sizeof buf, "  %-22s %14d of %d cloth triangles through a collider's surface (at the end)\n", "triangles_through",
+                      look.through, look.triangles);
+        out << buf;
+    }
+    if (look.flips_applies) {
+        std::snprintf(buf, sizeof buf, "  %-22s %14d of %d cloth triangles turned against the rest shape's normal (at the end)\n",
+                      "turned_over", look.flips.flipped, look.flips.triangles);
         out << buf;
     }
     if (r.windowed) {
@@ -119,6 +131,9 @@ void writeSummaryJson(const std::string& path, const Simulation& sim, const RunR
         for (const WindowStat& s : r.window_stats) w["metrics"][s.name] = {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"unit", s.unit}};
         j["window"] = w;
     }
+    const LookChecks look = lookChecks(sim);
+    if (look.through_applies) j["metrics"]["triangles_through"] = {{"value", look.through}, {"unit", "1"}, {"of", look.triangles}};
+    if (look.flips_applies) j["metrics"]["turned_over"] = {{"value", look.flips.flipped}, {"unit", "1"}, {"of", look.flips.triangles}};
     j["notes"] = r.notes;
     j["warnings"] = nlohmann::json::array();
     for (const RunWarning& w : r.warnings) {
