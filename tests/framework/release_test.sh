@@ -56,7 +56,7 @@ unheld() {  # unheld DIR: the docs DIR's sheets, hints, stubs and README name th
 }
 dead=$(unheld "$tmp/copy")
 [[ -z $dead ]] || fail "the sheets or the README name docs the copy does not hold (tools/student_copy.txt leaves them out): $dead"
-mkdir -p "$tmp/planted" && cp -r "$tmp/copy/exercises" "$tmp/copy/README.md" "$tmp/planted/" && echo 'see docs/mfn.md' >>"$tmp/planted/exercises/02_mfn/README.md"
+mkdir -p "$tmp/planted" && cp -r "$tmp/copy/exercises" "$tmp/copy/docs" "$tmp/copy/README.md" "$tmp/planted/" && echo 'see docs/mfn.md' >>"$tmp/planted/exercises/02_mfn/README.md"
 [[ $(unheld "$tmp/planted") == "docs/mfn.md; " ]] || fail "a sheet naming docs/mfn.md (planted) is not found by the check above"
 # The reference objects: every stage of solutions/ has some, no source beside them, no debug information
 # (source paths, lines), no path into solutions/ (a Debug build's assert messages would quote code).
