@@ -48,6 +48,6 @@ expect_error bad_method "error: command line: --compare: \"rk5\": .*solver.metho
 expect_error bad_key "error: command line: --compare: \"rk4:gravity\": expected METHOD:key=value" run "$root/scenes/spring.json" --compare rk4,rk4:gravity --out "$tmp/x"
 touch "$tmp/file"
 expect_error out_is_a_file "error: $tmp/file/c: (folder): cannot" run "$root/scenes/spring.json" --compare rk4,rk4 --seconds 0.1 --out "$tmp/file/c"
-expect_error with_dump "error: command line: --compare: --state, --dump and --strict" run "$root/scenes/spring.json" --compare rk4,rk4 --dump "$tmp/d.csv"
+expect_error with_dump "error: command line: --compare: --state, --dump, --strict and --window" run "$root/scenes/spring.json" --compare rk4,rk4 --dump "$tmp/d.csv"
 [[ $fail -eq 0 ]] && echo "ok: run --compare writes compare.csv (a row per run per sample) and compare.png; bad lists give one error line"
 exit $fail
