@@ -4,7 +4,8 @@
 #   bash slides/edition_text.sh en|de [--projected] FILE...
 # Keeps the lines shared by both languages and those of LANG: drops `::: xx` blocks (to their closing
 # `:::`) and `# ... {.xx}` headings of the other language, unwraps the own ones (the fence lines go,
-# " {.LANG}" is cut from headings). --projected: also drops the speaker notes (`::: notes` blocks), so
+# " {.LANG}" is cut from headings; other classes stay: "## Title {.en .derivation}" becomes
+# "## Title {.derivation}", as edition.lua keeps them). --projected: also drops the speaker notes (`::: notes` blocks), so
 # what is left is what the projector shows.
 set -euo pipefail
 lang=$1; shift
@@ -33,9 +34,11 @@ awk -v lang="$lang" -v other="$other" -v notes="$notes" '
     next
   }
   dropped() { next }
-  /^#+ .*\{\.(en|de)\} *$/ {
-    if ($0 ~ ("\\{\\." other "\\} *$")) next
-    sub(/ *\{\.(en|de)\} *$/, "")
+  # a heading of one language: "## Title {.en}", or with more classes "## Title {.en .derivation}"
+  /^#+ .*\{\.(en|de)( +\.[A-Za-z-]+)*\} *$/ {
+    if ($0 ~ ("\\{\\." other "( +\\.[A-Za-z-]+)*\\} *$")) next
+    if ($0 ~ /\{\.(en|de)\} *$/) sub(/ *\{\.(en|de)\} *$/, "")
+    else sub(/\{\.(en|de) +/, "{")
   }
   { print }
 ' "$@"

@@ -278,8 +278,8 @@ TEST(Task1_3_ExplicitEuler, EnergyGrowsOnUndampedOscillator) {
     energyBehaviour(&explicitEulerStep, 0.01, 10.0, &maxEnergyChange, &energyRatio);
     EXPECT_GREATER(energyRatio, 2.0)
         << "the energy ratio E/E0 of the undamped oscillator after 10 periods of explicit Euler at omega dt = 0.1: explicit "
-           "Euler multiplies the amplitude by sqrt(1 + omega^2 dt^2) every step, so the energy must have grown a lot "
-           "(theory: 1.01^628 = 517)";
+           "Euler takes both derivatives at the start of the step and gains energy every step, so after 628 steps the energy "
+           "must have more than doubled";
 }
 
 // =============================== Task 1.4: symplectic Euler =================================
@@ -564,5 +564,5 @@ TEST(Task1_5_VelocityVerlet, ConservesMomentumAndAngularMomentumWithRandomMasses
 // explain the difference, in exercises/01_hooke/answers.json. This test checks only that the file is
 // complete and well formed; the numbers are graded by the instructor.
 TEST(Experiments, AnswerFileIsComplete) {
-    EXPECT_TRUE(testing_util::answerFileIsComplete("01_hooke", {"symplectic_euler_order", "velocity_verlet_order"}, {"symplectic_euler_order", "velocity_verlet_order"}));
+    EXPECT_TRUE(testing_util::answerFileIsComplete("01_hooke", {"energy_drift_dt_1ms", "energy_drift_dt_0_5ms"}, {"energy_drift_dt_1ms", "energy_drift_dt_0_5ms"}));
 }

@@ -396,5 +396,5 @@ TEST(Bonus4_4_Tethers, HangingChainStretchesNoFartherThanAtRest) {
 // explain the difference, in exercises/04_distance/answers.json. This test checks only that the file is
 // complete and well formed; the numbers are graded by the instructor.
 TEST(Experiments, AnswerFileIsComplete) {
-    EXPECT_TRUE(testing_util::answerFileIsComplete("04_distance", {"light_particle_correction"}, {"max_strain_stiffness_1", "max_strain_stiffness_0_9"}));
+    EXPECT_TRUE(testing_util::answerFileIsComplete("04_distance", {"link_strain_dt_0_01", "link_strain_dt_0_005"}, {"link_strain_dt_0_01", "link_strain_dt_0_005"}));
 }

@@ -509,5 +509,5 @@ TEST(Task5_2_ProjectBending, RandomStencilsMassesAndScales) {
 // explain the difference, in exercises/05_bending/answers.json. This test checks only that the file is
 // complete and well formed; the numbers are graded by the instructor.
 TEST(Experiments, AnswerFileIsComplete) {
-    EXPECT_TRUE(testing_util::answerFileIsComplete("05_bending", {"dihedral_angle"}, {"rms_bending_error_stiffness_0_02", "rms_bending_error_stiffness_1"}));
+    EXPECT_TRUE(testing_util::answerFileIsComplete("05_bending", {"bending_error_stiffness_0_1", "bending_error_stiffness_0_5"}, {"bending_error_stiffness_0_1", "bending_error_stiffness_0_5"}));
 }

@@ -433,5 +433,5 @@ TEST(Task7_5_SelfCollisionSteps, CollidingCloudsKeepTheirMomentum) {
 // explain the difference, in exercises/07_self_collision/answers.json. This test checks only that the file is
 // complete and well formed; the numbers are graded by the instructor.
 TEST(Experiments, AnswerFileIsComplete) {
-    EXPECT_TRUE(testing_util::answerFileIsComplete("07_self_collision", {"largest_holding_spacing"}, {"layer_distance"}));
+    EXPECT_TRUE(testing_util::answerFileIsComplete("07_self_collision", {"rest_height"}, {"rest_height"}));
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -278,23 +279,59 @@ inline testing::AssertionResult answerFileIsComplete(const char* stageDir, const
     return testing::AssertionSuccess();
 }
 
-/// The final value of metric `name` after a run of a scene as `./lab run SCENE --set ... --quiet` prints it
-/// in its summary: solver.steps steps of the scene (its JSON text, e.g. kScene_pbd_curtain from
-/// experiment_scenes.h) with the overrides, through whichever code this binary links for each stage.
+/// A run of a scene as `./lab run SCENE --set ... --quiet` makes it, remade by the instructor's grade of a
+/// measurement: solver.steps steps of the scene (its JSON text, e.g. kScene_pbd_link from
+/// experiment_scenes.h) with the overrides, through whichever code this binary links for each stage,
+/// with the run's checks (RunChecks: the warnings its summary prints).
+struct SceneRun {
+    std::string command;          ///< how the student types it, "./lab run scenes/x.json --set a=b", for messages
+    std::vector<Metric> metrics;  ///< the summary's final metrics
+    std::string warning;          ///< the first warning of the run (warningHeadline()), "" when it gave none
+    std::unique_ptr<Simulation> sim;  ///< the simulation after its last step (its state)
+    /// The final value of metric `name`, as the summary prints it.
+    /// @throws std::runtime_error when the run reports no such metric
+    double metric(const std::string& name) const {
+        for (const Metric& m : metrics)
+            if (m.name == name) return m.value;
+        throw std::runtime_error(command + ": the run reports no metric " + name);
+    }
+};
+
+/// One quantity of an instructor's experiment that the student predicts and measures: its field in
+/// answers.json, the value of the setting the runs vary (a time step in s, a stiffness), and the
+/// quantity in words with its unit, for messages.
+struct ExperimentField {
+    const char* field;  ///< e.g. "link_strain_dt_0_01"
+    double setting;     ///< e.g. 0.01 (s)
+    const char* what;   ///< e.g. "the strain at rest of the link of pbd_link at dt = 0.01 s, 1"
+};
+
+/// Runs a scene as `./lab run` does (SceneRun). `file` is the scene's path as the student types it
+/// (mesh files are looked up beside it).
 /// @throws std::runtime_error when that run stops (the code under test blew up): the test fails with
 ///         this one message, "your code's run of ... was unstable at step N ...", and grades nothing
-inline double finalMetric(const char* sceneText, const std::string& file, const std::vector<std::string>& sets, const std::string& name) {
+inline SceneRun runScene(const char* sceneText, const std::string& file, const std::vector<std::string>& sets) {
     const Scene scene = parseScene(sceneText, file, sets);
-    auto sim = makeSimulation(scene);
-    const RunResult r = runSimulation(*sim, scene.solver.steps, scene.solver.steps);
-    std::string with;
-    for (const auto& s : sets) with += " --set " + s;
+    SceneRun run;
+    run.command = "./lab run " + file;
+    for (const auto& s : sets) run.command += " --set " + s;
+    run.sim = makeSimulation(scene);
+    const RunResult r = runSimulation(*run.sim, scene.solver.steps, scene.solver.steps);
     if (r.unstable)
-        throw std::runtime_error("your code's run of " + file + with + " (the experiment's expected value comes from it) was " +
-                                 r.message + ": the stage's other tests show where");
-    for (const Metric& m : sim->metrics())
-        if (m.name == name) return m.value;
-    throw std::runtime_error(file + ": the run reports no metric " + name);
+        throw std::runtime_error("your code's run of " + run.command + " (the experiment's expected value comes from it) was " + r.message +
+                                 ": the stage's other tests show where");
+    run.metrics = run.sim->metrics();
+    if (!r.warnings.empty()) run.warning = warningHeadline(r.warnings.front(), scene);
+    return run;
+}
+
+/// A measurement from a run that warned is no result (its summary says not to trust the numbers):
+/// a failure naming the run and its warning, so its measurement earns no points; success otherwise.
+/// @param run  the run the measurement came from
+inline testing::AssertionResult runGaveAResult(const SceneRun& run) {
+    if (run.warning.empty()) return testing::AssertionSuccess();
+    return testing::AssertionFailure() << "your code's run of " << run.command << " warned (" << run.warning
+                                       << "), so its numbers are no result; the warning names the pass and the exercise to fix";
 }
 
 /// Asserts a grade (gradePrediction(), gradeMeasurement()) without quoting its arguments: EXPECT_TRUE

@@ -47,11 +47,17 @@ pictures() {
   $g gui scenes/spring.json --screenshot $fig/app_spring.png --frames 40 --size 1200x750
   $g gui scenes/pbd_sphere.json --screenshot $fig/app_pbd.png --frames 84 --size 1100x690
   $g gui scenes/mfn_hanging.json --screenshot $fig/app_mfn.png --frames 61 --size 1100x690 --strain
+  # docs/render.md "Side by side": two runs in the app, and compare.png of ./lab run --compare
+  $g gui scenes/pbd_sphere.json --compare pbd:iterations=3,pbd:iterations=30 --screenshot $fig/app_compare.png --frames 90
+  build/bin/clothlab run scenes/pbd_hanging.json --compare pbd:iterations=5,pbd:iterations=50,xpbd --seconds 3 --out "$tmp/cmp" --quiet
+  cp "$tmp/cmp/compare.png" $fig/compare_hanging.png
   # the demo reel (./lab demo renders these clips at 640x360, 30 fps) and the chain
   frame scenes/spring.json 0.4 demo_spring.png
   frame scenes/mfn_hanging.json 1.5 demo_mfn_hanging.png --strain
   frame scenes/pbd_sphere.json 2 demo_pbd_sphere.png
   frame scenes/chain.json 0.334 demo_chain.png
+  frame scenes/pbd_tablecloth.json 3 demo_pbd_tablecloth.png
+  frame scenes/pbd_hammock.json 4 demo_pbd_hammock.png
 }
 
 for p in "${parts[@]}"; do

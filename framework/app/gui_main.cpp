@@ -1,5 +1,5 @@
 // clothlab-gui: the interactive app in a GLFW window (OpenGL through libGL).
-//   clothlab-gui [SCENE] [--scenes DIR] [--size WxH]
+//   clothlab-gui [SCENE] [--scenes DIR] [--size WxH] [--compare a,b,...]
 //   clothlab-gui SCENE --screenshot FILE.png --frames N   (runs N frames in the real window, saves it, quits)
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -22,7 +22,7 @@
 int main(int argc, char** argv) {
     using namespace clothlab;
     CLI::App cli{"clothlab-gui — the interactive cloth lab (GLFW window + Dear ImGui)"};
-    std::string scene, scenes = CLOTHLAB_SCENES_DIR, screenshot, size = "1280x800";
+    std::string scene, scenes = CLOTHLAB_SCENES_DIR, screenshot, size = "1280x800", compare;
     int frames = 0, wave = 0;
     bool edges = false;
     cli.add_option("scene", scene, "Scene file (default: the first in --scenes)");
@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     cli.add_option("--bench-grid", wave, "Benchmark: show an n x n cloth moved by a wave; prints frames per second")
         ->check(CLI::Range(0, 1024));
     cli.add_flag("--edges", edges, "Start with the spring/constraint overlay shown");
+    cli.add_option("--compare", compare, "Run 2 to 4 variants side by side, e.g. pbd,xpbd or pbd:iterations=5,pbd:iterations=50");
     CLI11_PARSE(cli, argc, argv);
     int W = 1280, H = 800;
     if (std::sscanf(size.c_str(), "%dx%d", &W, &H) != 2 || W < 64 || H < 64) {
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
         o.wave_grid = wave;
         o.sets = sets;
         o.edges = edges ? 1 : -1;
+        o.compare = compare;
         App app(o);
         int frame = 0, fw = W, fh = H;
         auto t0 = std::chrono::steady_clock::now();

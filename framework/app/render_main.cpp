@@ -1,7 +1,8 @@
 // clothlab-render (OSMesa) and clothlab-render-egl (EGL surfaceless): offscreen pictures, no display
 // needed. One source, two programs: each links one backend of render/offscreen.h; ./lab picks one.
 //   render SCENE [--seconds T] [--fps F] --out DIR [--video FILE.mp4]   frames of a simulated scene
-//   gui [SCENE] --screenshot FILE.png [--frames N]                       the whole app, panels included
+//   gui [SCENE] --screenshot FILE.png [--frames N] [--compare a,b] [--status F.json] [--timings]
+//                                                                        the whole app, panels included
 //   bench [--n 32] [--frames 60]                                         app frames per second on an n x n cloth
 //   probe                                                                can this backend make a context here?
 // Each run prints one line "renderer: OSMesa (llvmpipe)" or "renderer: EGL surfaceless (llvmpipe)";
@@ -10,16 +11,19 @@
 #include <backends/imgui_impl_opengl2.h>
 
 #include <GL/gl.h>
+#include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/sim/run.h"
+#include "clothlab/sim/scene_checks.h"
 #include "clothlab/core/not_implemented.h"
 #include "clothlab/core/stub_advice.h"
 #include "clothlab/gui/app.h"
@@ -41,6 +45,15 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+// CPU time of this process, every thread (the simulation's and llvmpipe's), s: on a busy machine a
+// frame's wall time grows with the others' load, its CPU time much less; on an idle machine with two
+// cores the wall time is at most the CPU time (docs/performance.md).
+double cpuSeconds() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
 
 // An ImGui context drawing into the current (offscreen) GL context.
 struct OffscreenImGui {
@@ -130,6 +143,7 @@ int runRender(const RenderArgs& a) {
         }
         if (result.unstable) break;
         shots.push_back(makeDrawData(*sim));
+        shots.back().note = lookChecksLine(lookChecks(*sim));  // what the picture shows, by numbers (sim/scene_checks.h)
     }
     result.wall = seconds(t0, Clock::now());
     if (!result.unstable) checks.finish(*sim);
@@ -190,9 +204,11 @@ int runRender(const RenderArgs& a) {
 
 // ---- gui --screenshot and bench ----------------------------------------------------------------
 struct GuiArgs {
-    std::string scene, screenshot, scenes = CLOTHLAB_SCENES_DIR, size = "1280x800";
+    std::string scene, screenshot, scenes = CLOTHLAB_SCENES_DIR, size = "1280x800", compare, status;
     int frames = 30, wave = 0, edges = -1;
-    bool strain = false;
+    double display_fps = 60;  // each frame asks for 1/display_fps simulated seconds (a display at that rate)
+    bool app_budget = false;  // step with the window app's budget (a 30 fps frame) instead of all a frame asks for
+    bool strain = false, timings = false;
     std::vector<std::string> sets;
 };
 
@@ -208,24 +224,51 @@ int runGui(const GuiArgs& a) {
     o.edges = a.edges;
     o.strain = a.strain;
     o.sets = a.sets;
+    o.compare = a.compare;
+    o.timing = a.timings;
+    o.cpu_clock = cpuSeconds;
+    // Offscreen every frame steps all it asks for: a screenshot after N frames shows t = N / display fps,
+    // whatever the machine's load; --app-budget steps as the window does (docs/performance.md).
+    if (!a.app_budget) o.step_budget = 1e9;
+    const double frame_dt = 1.0 / a.display_fps;
     App app(o);
     // The first frames build the font texture and lay out the panel; time the rest.
     const int warm = 3, frames = std::max(a.frames, warm + 1);
     auto t0 = Clock::now();
+    double imgui_ms = 0, imgui_cpu = 0, cpu0 = 0;
     for (int f = 0; f < frames; ++f) {
-        if (f == warm) t0 = Clock::now();
-        gui.begin(1.0 / 60);
+        if (f == warm) t0 = Clock::now(), app.resetTimings(), imgui_ms = imgui_cpu = 0, cpu0 = cpuSeconds();
+        gui.begin(frame_dt);
         app.frame(W, H);
+        const auto r0 = Clock::now();
+        const double c = cpuSeconds();
         gui.end();
         glFinish();
+        imgui_ms += 1e3 * seconds(r0, Clock::now());
+        imgui_cpu += 1e3 * (cpuSeconds() - c);
     }
+    const double s = seconds(t0, Clock::now()), n = frames - warm, cpu = cpuSeconds() - cpu0;
     const Image img = ctx->read();
-    const double s = seconds(t0, Clock::now()), n = frames - warm;
     std::cout << "app frame " << W << "x" << H << (a.wave > 1 ? ", " + std::to_string(a.wave) + "x" + std::to_string(a.wave) + " cloth" : "")
-                  << ": " << 1000 * s / n << " ms per frame (" << n / s << " fps, " << ctx->description() << ")\n";
+                  << ": " << 1000 * s / n << " ms per frame (" << n / s << " fps, " << ctx->description() << "); CPU time "
+                  << 1000 * cpu / n << " ms per frame, all threads\n";
+    if (a.timings) {  // where the frame's time goes, wall and CPU (docs/performance.md)
+        const AppTimings& t = app.timings();
+        std::printf("  per frame, wall (CPU of every thread): simulate %.2f (%.2f) ms, draw %.2f (%.2f) ms (data %.2f ms), panel %.2f (%.2f) ms, "
+                    "imgui render %.2f (%.2f) ms\n",
+                    t.simulate / n, t.cpu_simulate / n, t.draw / n, t.cpu_draw / n, t.draw_data / n, t.panel / n, t.cpu_panel / n, imgui_ms / n,
+                    imgui_cpu / n);
+        for (const RenderPassTime& p : app.renderer().passTimes())
+            std::printf("    draw: %-22s %6.2f (%.2f) ms\n", p.name, p.ms / n, p.cpu_ms / n);
+    }
     if (!a.screenshot.empty()) {
         writePng(a.screenshot, img);
         std::cout << "wrote " << a.screenshot << " (" << W << "x" << H << ", " << a.frames << " frames)\n";
+    }
+    if (!a.status.empty()) {
+        std::ofstream out(a.status);
+        if (!(out << app.statusJson() << "\n")) throw InputError(a.status, "(file)", "cannot write the file");
+        std::cout << "wrote " << a.status << "\n";
     }
     if (!app.message().empty()) std::cout << "panel message: " << app.message() << "\n";
     for (const std::string& w : app.warnings()) std::cout << "panel " << w << "\n";
@@ -263,6 +306,13 @@ int main(int argc, char** argv) {
     g->add_option("--size", ga.size, "Window size WIDTHxHEIGHT");
     g->add_flag_callback("--edges", [&] { ga.edges = 1; }, "Start with the spring/constraint overlay shown");
     g->add_flag("--strain", ga.strain, "Start with the overlay coloured by strain");
+    g->add_option("--compare", ga.compare, "Run 2 to 4 variants side by side, e.g. pbd,xpbd or pbd:iterations=5,pbd:iterations=50");
+    g->add_option("--status", ga.status, "Also write what the last frame showed as JSON (runs, their views and labels, cut text)");
+    g->add_flag("--timings", ga.timings, "Print where the frame's time goes (simulation, renderer passes, panel, ImGui)");
+    g->add_option("--display-fps", ga.display_fps, "Each frame asks for 1/F simulated seconds, as on a display at F frames per second (default 60)")
+        ->check(CLI::Range(1.0, 1000.0));
+    g->add_flag("--app-budget", ga.app_budget,
+                "Step as the window app does, what is left of a 30 fps frame (default: every frame steps all it asks for)");
     g->callback([&] { code = runGui(ga); });
 
     GuiArgs ba;
@@ -274,6 +324,7 @@ int main(int argc, char** argv) {
     b->add_option("--screenshot", ba.screenshot, "Also save the last frame");
     b->add_flag_callback("--edges", [&] { ba.edges = 1; }, "Draw the spring/constraint overlay too");
     b->add_flag("--strain", ba.strain, "Draw the overlay coloured by strain");
+    b->add_flag("--timings", ba.timings, "Print where the frame's time goes");
     b->callback([&] {
         if (ba.wave == 0) ba.wave = 32;
         code = runGui(ba);

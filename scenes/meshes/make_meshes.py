@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the OBJ meshes of the lecture scenes (our own geometry, no downloaded models).
 
-    python3 scenes/meshes/make_meshes.py    # rewrites table.obj, round_cloth.obj, poncho.obj, mannequin.obj
+    python3 scenes/meshes/make_meshes.py    # rewrites table.obj, round_cloth.obj, poncho.obj, two_layers.obj, mannequin.obj
 
 Every solid is closed, its triangles counter-clockwise seen from outside (normals point out).
 """
@@ -85,6 +85,19 @@ def disc(radius, rings, hole_rings=0):
     return verts, tris
 
 
+def grid(verts, tris, n, a, x0, y, z0):
+    """An n x n grid of spacing a in the plane y, starting at (x0, y, z0); two triangles per square."""
+    base = len(verts)
+    for j in range(n):
+        for i in range(n):
+            verts.append((x0 + i * a, y, z0 + j * a))
+    at = lambda i, j: base + j * n + i
+    for j in range(n - 1):
+        for i in range(n - 1):
+            tris.append((at(i, j), at(i, j + 1), at(i + 1, j + 1)))
+            tris.append((at(i, j), at(i + 1, j + 1), at(i + 1, j)))
+
+
 def main():
     v, t = [], []
     box(v, t, (0.0, 0.735, 0.0), (0.6, 0.025, 0.4))  # table top, 1.2 m x 0.8 m, top face at 0.76 m
@@ -98,6 +111,11 @@ def main():
 
     v, t = disc(0.77, 14, hole_rings=2)
     write("poncho.obj", "a poncho: a disc of radius 0.77 m with a neck hole of radius 0.11 m, in the x-z plane", v, t)
+
+    v, t = [], []  # the upper layer first (particle 0 is in it), each of its particles above the centre of a square below
+    grid(v, t, 7, 0.03, 0.015, 0.05, 0.015)
+    grid(v, t, 8, 0.03, 0.0, 0.0, 0.0)
+    write("two_layers.obj", "two layers of spacing 0.03 m: 7 x 7 particles at y = 0.05 m above the centres of the squares of 8 x 8 at y = 0", v, t)
 
     v, t = lathe(DUMMY)
     write("mannequin.obj", "a tailor's dummy from 0.8 m to 1.87 m: one closed surface of revolution (elliptic sections)", v, t)

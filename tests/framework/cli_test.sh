@@ -162,6 +162,27 @@ row=$(tail -1 "$tmp/rt/report.csv")
 if [[ $(cut -d, -f2 <<<"$row") == 0.10000000000000001 ]]; then ok; else bad "report.csv t with 17 digits: $row"; fi
 if jq -e --arg e "$(cut -d, -f4 <<<"$row")" '(.metrics.energy.value - ($e | tonumber)) == 0 and (.simulated_time - 0.1) == 0' "$tmp/rt/summary.json" >/dev/null
 then ok; else bad "summary.json energy does not read back as report.csv's: $row, $(cat "$tmp/rt/summary.json")"; fi
+# --window T0,T1: every metric's min, mean and max over the states with t in [T0, T1] s, taken at every
+# step whatever --every is. Checked against report.csv of the same run written at every step (awk over
+# its rows with 0.5 <= t <= 1, not the code under test), on a metric that oscillates (the spring's error).
+"$exe" run "$root/scenes/spring.json" --steps 1500 --every 1 --quiet --out "$tmp/win1" >/dev/null 2>&1
+"$exe" run "$root/scenes/spring.json" --steps 1500 --every 500 --window 0.5,1 --out "$tmp/win" >"$tmp/win.out" 2>&1
+want=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "error [m]") c = i; next }
+                $2 >= 0.5 - 1e-9 && $2 <= 1 + 1e-9 { v = $c + 0; n++; s += v; if (n == 1 || v < lo) lo = v; if (n == 1 || v > hi) hi = v }
+                END { printf "%d %.17g %.17g %.17g", n, lo, s / n, hi }' "$tmp/win1/report.csv")
+read -r n lo mean hi <<<"$want"
+if [[ $n -eq 501 ]] && jq -e --argjson lo "$lo" --argjson mean "$mean" --argjson hi "$hi" '.window.states == 501 and .window.from == 0.5 and .window.to == 1
+     and .window.metrics.error.min == $lo and .window.metrics.error.max == $hi and (.window.metrics.error.mean - $mean | fabs) <= 1e-12 * $hi
+     and .window.metrics.error.max > 2 * .window.metrics.error.min' "$tmp/win/summary.json" >/dev/null \
+   && grep -q '^over t in \[0.5, 1\] s (501 states, --window):' "$tmp/win.out" && grep -qE '^  error +[0-9.e+-]+ +[0-9.e+-]+ +[0-9.e+-]+ m$' "$tmp/win.out"
+then ok; else bad "--window 0.5,1: report.csv gives $want (states, min, mean, max of error), the run: $(jq -c .window "$tmp/win/summary.json" 2>&1 | head -c 600)"; fi
+# Bad windows: one error line naming --window, exit 1 (a window after the run's end, reversed, not two numbers).
+for w in "3" "2,1" "0.5,9" "a,1" ","; do
+  "$exe" run "$root/scenes/spring.json" --steps 100 --window "$w" >"$tmp/out" 2>"$tmp/err"
+  code=$?
+  if [[ $code -eq 1 && $(grep -c '^error: ' "$tmp/err") -eq 1 ]] && grep -q "^error: command line: --window: \"$w\": " "$tmp/err"; then ok
+  else bad "--window $w: exit $code, $(cat "$tmp/err")"; fi
+done
 # Bad state files: one error line naming the file and the row or field, exit 1.
 bad_state() {  # bad_state NAME FIELD CONTENT
   printf '%b' "$3" >"$tmp/$1.csv"

@@ -15,7 +15,7 @@
 # a derivation's formula in a doc, and a new file holding a reference body; each must be reported,
 # naming the planted file.
 #   leak_test.sh SOURCE_ROOT LEAK_CHECK
-set -u
+set -u -o pipefail
 export LC_ALL=C.UTF-8
 root=$1 check=$2
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

@@ -50,6 +50,14 @@ while IFS= read -r -d '' md; do
   done < <(grep -oE '\]\([^)[:space:]]+\)' "$md" | sed -E 's/^\]\((.*)\)$/\1/')
 done < <(find "$tmp/copy" -name '*.md' -print0)
 [[ -z $dead ]] || fail "links in the copy to files it does not hold (tools/student_copy.txt leaves them out): $dead"
+# What students read (the sheets, hints, stubs and the README) names only docs the copy holds.
+unheld() {  # unheld DIR: the docs DIR's sheets, hints, stubs and README name that DIR does not hold
+  local p; for p in $(cd "$1" && grep -rhoE 'docs/[A-Za-z0-9_/]+\.md' exercises README.md | sort -u); do [[ -e $1/$p ]] || printf '%s; ' "$p"; done
+}
+dead=$(unheld "$tmp/copy")
+[[ -z $dead ]] || fail "the sheets or the README name docs the copy does not hold (tools/student_copy.txt leaves them out): $dead"
+mkdir -p "$tmp/planted" && cp -r "$tmp/copy/exercises" "$tmp/copy/docs" "$tmp/copy/README.md" "$tmp/planted/" && echo 'see docs/mfn.md' >>"$tmp/planted/exercises/02_mfn/README.md"
+[[ $(unheld "$tmp/planted") == "docs/mfn.md; " ]] || fail "a sheet naming docs/mfn.md (planted) is not found by the check above"
 # The reference objects: every stage of solutions/ has some, no source beside them, no debug information
 # (source paths, lines), no path into solutions/ (a Debug build's assert messages would quote code).
 for d in "$root"/solutions/[0-9][0-9]_*/; do

@@ -8,7 +8,9 @@
 #     escaped), and no link to any other file. The figures come from this build's command line, which
 #     in the instructor's tree runs solutions/: a finished student's exercises/. With a stand-in command
 #     line that stops at `not implemented`, the report is still written and each figure's place says
-#     why; a build that takes the reported stage from the reference is refused.
+#     why; with one whose runs warn (a pinned particle moved), each figure repeats the warning (its
+#     numbers are no result) and so does the terminal; a build that takes the reported stage from the
+#     reference is refused.
 #  2. Bad input: an unknown stage, broken JSON, a field of the wrong type, a missing answers.json or
 #     writeup.md, no pandoc: each one `error:` line naming the file, field or tool, exit 1, no HTML written; the same
 #     through ./lab report for an unknown stage and an unknown option.
@@ -71,7 +73,7 @@ printf '#!/bin/sh\necho "error: not implemented: exercise 1.4 symplecticEulerSte
 chmod +x "$tmp/stub/bin/clothlab"
 printf 'CLOTHLAB_CODE:STRING=exercises\nCLOTHLAB_REFERENCE_STAGES:STRING=05;06\n' >"$tmp/stub/CMakeCache.txt"
 # (with answers.json in the sections format: predict and measure, each FIELD: {value, what|how}, and explain)
-jq '.predict.symplectic_euler_order.value = 1 | .measure.velocity_verlet_order.value = 1.98 | .explain = "Verlet is MARKER_EXPLAIN <b>"' \
+jq '.predict.energy_drift_dt_1ms.value = 1 | .measure.energy_drift_dt_0_5ms.value = 1.98 | .explain = "Verlet is MARKER_EXPLAIN <b>"' \
   "$src/exercises/01_hooke/answers.json" >"$tmp/sections.json" && cp "$ex/answers.json" "$tmp/fields.json" && cp "$tmp/sections.json" "$ex/answers.json"
 bash "$src/tools/report.sh" --root "$tree" --build "$tmp/stub" 01 --out "$tmp/stubout" >"$tmp/stub.log" 2>&1 || fail "the report of an unfinished stage failed: $(tail -3 "$tmp/stub.log")"
 for want in '<h3>Predict (from theory, before running)</h3>' '<h3>Measure (your code, the command in how)</h3>' '<th>what to predict</th>' \
@@ -83,6 +85,17 @@ cp "$tmp/fields.json" "$ex/answers.json"
   && grep -q 'Figures made by your code in exercises/, the reference for stage 05,06' "$tmp/stubout/01_hooke.html" \
   && [[ $(grep -c '^==> warning: report 01: figure' "$tmp/stub.log") -eq 3 ]] && grep -q '(0 of 3 figures; 3 could not be made' "$tmp/stub.log" \
   || fail "an unfinished stage's report: $(tail -3 "$tmp/stub.log")"
+# a run that warned: its numbers are no result, so the report repeats its warning beside the figure and on
+# the terminal (a stand-in command line whose runs end with a warning, as ./lab run prints it)
+mkdir -p "$tmp/warn/bin" && cp "$tmp/stub/CMakeCache.txt" "$tmp/warn/"
+printf '#!/bin/sh\necho "summary: 10 steps"\necho "warnings (1): do not trust the numbers above; each warning says why and what would help"\necho "  warning: MARKER_WARN a pinned particle (0) moved in the pass constraints: distance"\nexit 0\n' >"$tmp/warn/bin/clothlab"
+chmod +x "$tmp/warn/bin/clothlab"
+bash "$src/tools/report.sh" --root "$tree" --build "$tmp/warn" 01 --out "$tmp/warnout" >"$tmp/warn.log" 2>&1 || fail "the report of runs that warned failed: $(tail -3 "$tmp/warn.log")"
+[[ $(grep -c 'class="fail">Warning: a run of this figure warned' "$tmp/warnout/01_hooke.html" 2>/dev/null) -eq 3 ]] \
+  && grep -q 'warning: MARKER_WARN a pinned particle (0) moved' "$tmp/warnout/01_hooke.html" \
+  && grep -q '^==> warning: report 01: figure 1 (.*): a run warned, its numbers are no result: ./lab run scenes/spring.json .*MARKER_WARN' "$tmp/warn.log" \
+  && grep -q 'runs warned: their numbers are no result' "$tmp/warn.log" \
+  || fail "a run that warned: the report does not repeat its warning beside each figure and on the terminal: $(grep -i warn "$tmp/warn.log" | head -5)"
 sed -i 's/^CLOTHLAB_REFERENCE_STAGES:STRING=.*/CLOTHLAB_REFERENCE_STAGES:STRING=01;02/' "$tmp/stub/CMakeCache.txt"
 bash "$src/tools/report.sh" --root "$tree" --build "$tmp/stub" 01 --out "$tmp/refout" >"$tmp/ref.log" 2>&1 && fail "a report of stage 01 from the reference was made"
 grep -q '^error: report: this build takes stage 01 from the reference' "$tmp/ref.log" && [[ ! -e $tmp/refout/01_hooke.html ]] \

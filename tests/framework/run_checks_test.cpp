@@ -2,6 +2,11 @@
 // say it in the one text every program shows. (That they stay silent on every shipped scene is
 // SceneClaims.* in scene_claims_test.cpp; the exit code 3 of --strict is in cli_test.sh.)
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iterator>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -11,6 +16,7 @@
 #include "clothlab/sim/colliders.h"
 #include "clothlab/sim/run.h"
 #include "clothlab/study/theory.h"
+#include "test_util.h"
 
 using namespace clothlab;
 
@@ -212,4 +218,36 @@ TEST(RunChecks, PathDistanceFindsATunnel) {
     EXPECT_GT(pathDistance(s, Vec3(0.395, 1, 0), Vec3(0.395, -1, 0), 0.04), -0.04) << "grazing the rim: less than D deep";
     Collider p;  // the ground plane y = 0
     EXPECT_NEAR(pathDistance(p, Vec3(0, 0.01, 0), Vec3(3, 0.02, 0), 0.04), 0.01, 1e-12) << "sliding along the plane";
+}
+
+// The instructor's grade of a measurement refuses a number from a run that warned (tests/test_util.h:
+// runScene, runGaveAResult, gradeMeasurement): pbd_sphere at dt = 0.03 s falls through the sphere, and
+// the grade of a number entered exactly as that run made it still fails, naming the run and its warning;
+// the same scene at its own dt gives a result, and the same number then earns the points.
+TEST(RunChecks, AGradedMeasurementFromARunThatWarnedIsRefused) {
+    std::ifstream in(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/pbd_sphere.json");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string dir = ::testing::TempDir() + "clothlab_warned_run";
+    std::filesystem::create_directories(dir);
+    auto grade = [&](const testing_util::SceneRun& run) {
+        const double value = run.metric("max_strain");
+        std::ofstream(dir + "/answers.json") << "{\"predict\": {}, \"measure\": {\"max_strain\": {\"value\": " << std::setprecision(17) << value
+                                             << ", \"how\": \"the run\"}}, \"explain\": \"\"}";
+        ::setenv("CLOTHLAB_ANSWERS_DIR", dir.c_str(), 1);
+        const testing::AssertionResult g =
+            testing_util::gradeMeasurement("09_none", "max_strain", value, 1e-9, testing_util::runGaveAResult(run), "max_strain");
+        ::unsetenv("CLOTHLAB_ANSWERS_DIR");
+        return g;
+    };
+    const testing_util::SceneRun warned = testing_util::runScene(text.c_str(), "scenes/pbd_sphere.json", {"solver.dt=0.03", "solver.steps=60"});
+    ASSERT_FALSE(warned.warning.empty()) << "pbd_sphere at dt = 0.03 s must warn (it falls through the sphere): the test needs a run that warns";
+    const testing::AssertionResult refused = grade(warned);
+    EXPECT_FALSE(refused) << "a measurement from a run that warned must earn no points";
+    EXPECT_NE(std::string(refused.message()).find("warned (" + warned.warning + ")"), std::string::npos)
+        << "the refusal must name the run's warning; it says: " << refused.message();
+    EXPECT_NE(std::string(refused.message()).find("./lab run scenes/pbd_sphere.json --set solver.dt=0.03"), std::string::npos)
+        << "the refusal must name the run; it says: " << refused.message();
+    const testing_util::SceneRun clean = testing_util::runScene(text.c_str(), "scenes/pbd_sphere.json", {"solver.steps=60"});
+    EXPECT_TRUE(clean.warning.empty()) << "pbd_sphere at its own dt must not warn: " << clean.warning;
+    EXPECT_TRUE(grade(clean)) << "the same number from a run without a warning must earn the points";
 }

@@ -161,7 +161,7 @@ done <"$book"
 (($(ls "$tmp/out/feedback" | wc -l) == n && $(ls "$tmp/out/junit" | wc -l) == n)) || { echo "not one feedback JSON and one JUnit file per student"; bad=1; }
 ((bad == 0)) || { cat "$book"; fail "the gradebook is wrong (lines above)"; }
 # An experiment's message names the answers file as the student knows it, not the sandbox's copy.
-grep -qE 'exercises/01_hooke/answers.json: (predict|measure)[.][a-z_]*[.]value: null, not entered yet' "$tmp/out/feedback/ref_no_answers.json" \
+grep -qE 'exercises/01_hooke/answers.json: (predict|measure)[.][a-z0-9_]*[.]value: null, not entered yet' "$tmp/out/feedback/ref_no_answers.json" \
   && ! grep -q '/grade/answers' "$tmp/out/feedback/ref_no_answers.json" \
   || fail "ref_no_answers's feedback does not name exercises/01_hooke/answers.json (or names the sandbox path)"
 # The LMS imports (docs/grading.md "Exports") carry the same points per stage: moodle.csv is the

@@ -5,10 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+
+#include <nlohmann/json.hpp>
 
 #include <imgui.h>
 #include <backends/imgui_impl_opengl2.h>
@@ -387,6 +393,89 @@ TEST(App, StubShowsNotImplementedInsteadOfCrashing) {
     EXPECT_EQ(app.simulation()->state().t, 0.0) << "nothing should have advanced";
 }
 
+// One frame of the app offscreen: NewFrame, App::frame, Render (the draw data clippedText() reads).
+static void appFrame(App& app, int w, int h) {
+    ImGui::GetIO().DeltaTime = 1.0f / 60;
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui::NewFrame();
+    app.frame(w, h);
+    ImGui::Render();
+    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+}
+
+// Side by side: the runs advance together (the same simulated time within one step), each has its
+// own view right of the panel, and "Export CSV + PNG" writes one row per run per sample.
+TEST(App, ComparisonRunsTogetherAndExportsOneRowPerRunPerSample) {
+    const int w = 1280, h = 800;
+    OffscreenImGui gui(w, h);
+    AppOptions o;
+    o.scene = std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/pbd_hanging.json";
+    o.compare = "pbd:iterations=2,pbd:iterations=20";
+    o.step_budget = 1.0;  // every frame steps its 1/60 s, however busy the machine
+    App app(o);
+    for (int k = 0; k < 12; ++k) appFrame(app, w, h);
+    ASSERT_NE(app.comparison(), nullptr);
+    const auto& runs = app.comparison()->runs();
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_GT(runs[0].sim->state().t, 0.1) << "12 frames of 1/60 s";
+    EXPECT_NEAR(runs[0].sim->state().t, runs[1].sim->state().t, 0.0101) << "the runs go together (within one step of 0.01 s)";
+    EXPECT_GT(runs[0].samples.back().error, runs[1].samples.back().error) << "2 iterations stretch more than 20 (rms strain)";
+    const Viewport a = app.viewport(0), b = app.viewport(1);
+    EXPECT_GE(a.x, 340) << "the views are right of the panel";
+    EXPECT_LE(a.x + a.width, b.x) << "side by side, not overlapping";
+    EXPECT_EQ(a.width, b.width) << "views of one size, one camera";
+    const std::string dir = tmpDir() + "/app_export";
+    std::filesystem::remove_all(dir);
+    app.exportFigures(dir);
+    std::ifstream in(dir + "/compare.csv");
+    std::string line;
+    ASSERT_TRUE(std::getline(in, line)) << "no " << dir << "/compare.csv";
+    EXPECT_EQ(line, "method,t [s],wall [s],rms_strain [1],energy [J],max_strain [1]");
+    size_t first = 0, second = 0;
+    while (std::getline(in, line)) first += line.rfind("pbd:iterations=2,", 0) == 0, second += line.rfind("pbd:iterations=20,", 0) == 0;
+    EXPECT_EQ(first, runs[0].samples.size());
+    EXPECT_EQ(second, runs[1].samples.size());
+    EXPECT_GT(first, 10u) << "a sample per frame and one at t = 0";
+}
+
+// The panel reads at a glance: no text cut off by its window's edge, for every shipped scene, one
+// run and two side by side, at the default window size and at 1024 x 768 (clippedText()). Proof that
+// the check sees cut text: a line too long for a narrow window of its own.
+TEST(App, NoTextCutOffInThePanelOrThePlots) {
+    std::vector<std::string> scenes;
+    for (const auto& e : std::filesystem::directory_iterator(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes"))
+        if (e.path().extension() == ".json") scenes.push_back(e.path().string());
+    std::sort(scenes.begin(), scenes.end());
+    for (const auto& [w, h] : {std::pair{1280, 800}, std::pair{1024, 768}}) {
+        OffscreenImGui gui(w, h);
+        for (const std::string& scene : scenes)
+            for (const bool compare : {false, true}) {
+                AppOptions o;
+                o.scene = scene;
+                if (compare) o.compare = loadScene(scene).model == Model::Cloth ? "pbd,xpbd" : "explicit_euler,symplectic_euler";
+                App app(o);
+                for (int k = 0; k < 3; ++k) appFrame(app, w, h);
+                const std::string where = scene + (compare ? " side by side" : "") + " at " + std::to_string(w) + "x" + std::to_string(h);
+                EXPECT_TRUE(clippedText("clothlab").empty()) << where << ": text cut off in the panel at " << clippedText("clothlab").front();
+                EXPECT_TRUE(clippedText("comparison plots").empty()) << where << ": text cut off in the plots";
+            }
+        // Planted: a line too long for a 150-pixel window of its own (shown from its second frame on).
+        for (int k = 0; k < 2; ++k) {
+            ImGui::GetIO().DeltaTime = 1.0f / 60;
+            ImGui_ImplOpenGL2_NewFrame();
+            ImGui::NewFrame();
+            ImGui::SetNextWindowSize(ImVec2(150, 80));
+            ImGui::Begin("planted");
+            ImGui::Text("step 5.78 ms, self-collision h = 0.010 m");
+            ImGui::TextWrapped("a wrapped line is never cut off, however long it is");
+            ImGui::End();
+            ImGui::Render();
+            ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        }
+        EXPECT_EQ(clippedText("planted").size(), 1u) << "planted: the unwrapped line should be seen cut off, the wrapped one not";
+    }
+}
+
 // `render_test --check-app-screenshot FILE`: the app's picture has the panel on the left (light window
 // with dark text) and the scene on the right (the orange particle of the spring scene, the background).
 static int checkAppScreenshot(const char* path) {
@@ -423,6 +512,78 @@ static int checkAppScreenshot(const char* path) {
     return ok ? 0 : 1;
 }
 
+// `render_test --check-compare-screenshot FILE.png STATUS.json`: the split view of `gui --compare`
+// drawn and labelled. From the status (App::statusJson()): two or more runs, each with a view right of
+// the panel, views that do not overlap, its label box inside its view showing its label, samples and
+// time, no cut text. From the pixels: cloth (the warm front or the cool back) in each view outside its
+// label, and in each label box the run's colour (border and square) and dark text.
+static int checkCompareScreenshot(const char* png, const char* status_path) {
+    Image img;
+    nlohmann::json st;
+    try {
+        img = readPng(png);
+        std::ifstream in(status_path);
+        st = nlohmann::json::parse(in);
+    } catch (const std::exception& e) {
+        std::cerr << e.what() << "\n";
+        return 1;
+    }
+    bool ok = true;
+    auto expect = [&](bool c, const std::string& what) {
+        if (!c) std::cerr << "compare screenshot " << png << ": " << what << "\n", ok = false;
+    };
+    const auto rect = [](const nlohmann::json& j) { return std::array<int, 4>{j[0].get<int>(), j[1].get<int>(), j[2].get<int>(), j[3].get<int>()}; };
+    expect(st.value("compare", false), "the status says it is not a comparison");
+    const auto& runs = st["runs"];
+    expect(runs.is_array() && runs.size() >= 2, "fewer than two runs");
+    if (!ok) return 1;
+    expect(st["panel"]["cut_text"].empty(), "text cut off in the panel: " + st["panel"]["cut_text"].dump());
+    expect(st["plots"]["cut_text"].empty(), "text cut off in the plots: " + st["plots"]["cut_text"].dump());
+    std::vector<std::array<int, 4>> views;
+    for (size_t i = 0; i < runs.size(); ++i) {
+        const auto& r = runs[i];
+        const std::string who = "run " + std::to_string(i) + " (" + r.value("label", std::string("?")) + ")";
+        if (!r.contains("viewport") || !r.contains("label_box")) {
+            expect(false, who + ": no viewport or label box in the status");
+            continue;
+        }
+        const auto v = rect(r["viewport"]), b = rect(r["label_box"]);
+        views.push_back(v);
+        expect(v[0] >= 340 && v[0] + v[2] <= img.width && v[1] >= 0 && v[1] + v[3] <= img.height, who + ": its view is not right of the panel, in the window");
+        expect(b[0] >= v[0] && b[1] >= v[1] && b[0] + b[2] <= v[0] + v[2] && b[1] + b[3] <= v[1] + v[3], who + ": its label is not inside its view");
+        expect(r.value("label_text", std::string()) == r.value("label", std::string("-")), who + ": the label shows \"" + r.value("label_text", std::string()) + "\"");
+        expect(r.value("samples", 0) >= 2 && r.value("t", 0.0) > 0, who + ": it did not run (samples, t)");
+        expect(r.value("message", std::string()).empty(), who + ": stopped: " + r.value("message", std::string()));
+        int cloth = 0, n = 0;
+        for (int y = v[1]; y < v[1] + v[3]; ++y)
+            for (int x = v[0]; x < v[0] + v[2]; ++x) {
+                if (x >= b[0] && x < b[0] + b[2] && y >= b[1] && y < b[1] + b[3]) continue;
+                ++n;
+                cloth += warm(img.at(x, y)) || cool(img.at(x, y));
+            }
+        expect(cloth > 0.01 * n, who + ": no cloth drawn in its view (" + std::to_string(cloth) + " of " + std::to_string(n) + " pixels)");
+        unsigned cr = 0, cg = 0, cb = 0;
+        std::sscanf(r.value("color", std::string("#000000")).c_str(), "#%02x%02x%02x", &cr, &cg, &cb);
+        int colour = 0, dark = 0;
+        for (int y = b[1]; y < b[1] + b[3]; ++y)
+            for (int x = b[0]; x < b[0] + b[2]; ++x) {
+                const unsigned char* p = img.at(x, y);
+                colour += std::abs(p[0] - int(cr)) < 40 && std::abs(p[1] - int(cg)) < 40 && std::abs(p[2] - int(cb)) < 40;
+                dark += p[0] < 90 && p[1] < 90 && p[2] < 90;
+            }
+        expect(colour > 60, who + ": its colour " + r.value("color", std::string()) + " is not in its label (" + std::to_string(colour) + " pixels)");
+        expect(dark > 40, who + ": no text in its label");
+    }
+    for (size_t i = 0; i < views.size(); ++i)
+        for (size_t j = i + 1; j < views.size(); ++j) {
+            const auto &a = views[i], &c = views[j];
+            expect(a[0] + a[2] <= c[0] || c[0] + c[2] <= a[0] || a[1] + a[3] <= c[1] || c[1] + c[3] <= a[1],
+                   "the views of runs " + std::to_string(i) + " and " + std::to_string(j) + " overlap");
+        }
+    if (ok) std::cout << "ok: " << runs.size() << " runs drawn and labelled in " << png << "\n";
+    return ok ? 0 : 1;
+}
+
 // `render_test --compare-images A.png B.png MEAN BAD`: the same frame through two backends (OSMesa and
 // EGL, tests/render/backends_test.sh). Prints the mean difference per channel (0..255), the fraction
 // of pixels with a channel off by more than 32 and the largest channel difference; passes when the
@@ -450,6 +611,7 @@ static int compareImageFiles(const char* a_path, const char* b_path, double max_
 
 int main(int argc, char** argv) {
     if (argc == 3 && std::strcmp(argv[1], "--check-app-screenshot") == 0) return checkAppScreenshot(argv[2]);
+    if (argc == 4 && std::strcmp(argv[1], "--check-compare-screenshot") == 0) return checkCompareScreenshot(argv[2], argv[3]);
     if (argc == 6 && std::strcmp(argv[1], "--compare-images") == 0)
         return compareImageFiles(argv[2], argv[3], std::atof(argv[4]), std::atof(argv[5]));
     ::testing::InitGoogleTest(&argc, argv);

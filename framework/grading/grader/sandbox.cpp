@@ -493,7 +493,14 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     for (const auto& s : args) argv.push_back(const_cast<char*>(s.c_str()));
     for (const auto& s : env_text) envp.push_back(const_cast<char*>(s.c_str()));
     argv.push_back(nullptr), envp.push_back(nullptr);
-    const int ruleset = container ? landlockRules(run, user.scratch) : -1;
+    // The ruleset's descriptor above 9, like the channel's: the child's dup2 onto fd 3 must not replace it.
+    int ruleset = container ? landlockRules(run, user.scratch) : -1;
+    if (ruleset >= 0 && ruleset < 10) {
+        const int moved = ::fcntl(ruleset, F_DUPFD_CLOEXEC, 10);
+        ::close(ruleset);
+        if (moved < 0) die(std::string("container mode: cannot keep the Landlock ruleset: ") + std::strerror(errno));
+        ruleset = moved;
+    }
     const struct sock_fprog* filter = container && !weakened("container-seccomp") ? containerFilter() : nullptr;
     if (container)
         for (const auto& m : run.mounts)

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "clothlab/core/input_error.h"
+#include "clothlab/sim/scene_checks.h"
 
 namespace clothlab {
 namespace {
@@ -59,6 +60,27 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& r) 
                       "m", r.worst_penetration_step);
         out << buf;
     }
+    const LookChecks look = lookChecks(sim);  // what the picture shows, at the end (sim/scene_checks.h)
+    if (look.through_applies) {
+        std::snprintf(buf, sizeof buf, "  %-22s %14d of %d cloth triangles through a collider's surface (at the end)\n", "triangles_through",
+                      look.through, look.triangles);
+        out << buf;
+    }
+    if (look.flips_applies) {
+        std::snprintf(buf, sizeof buf, "  %-22s %14d of %d cloth triangles turned against the rest shape's normal (at the end)\n",
+                      "turned_over", look.flips.flipped, look.flips.triangles);
+        out << buf;
+    }
+    if (r.windowed) {
+        std::snprintf(buf, sizeof buf, "over t in [%.6g, %.6g] s (%lld states, --window):\n", r.window.from, r.window.to, r.window_states);
+        out << buf;
+        std::snprintf(buf, sizeof buf, "  %-22s %14s %14s %14s\n", "", "min", "mean", "max");
+        out << buf;
+        for (const WindowStat& w : r.window_stats) {
+            std::snprintf(buf, sizeof buf, "  %-22s %14.6e %14.6e %14.6e %s\n", w.name.c_str(), w.min, w.mean, w.max, w.unit.c_str());
+            out << buf;
+        }
+    }
     if (!r.warnings.empty()) {
         out << "warnings (" << r.warnings.size() << "): do not trust the numbers above; each warning says why and what would help\n";
         for (const RunWarning& w : r.warnings) out << "  warning: " << warningText(w, sim.scene()) << "\n";
@@ -104,6 +126,14 @@ void writeSummaryJson(const std::string& path, const Simulation& sim, const RunR
         for (const Metric& m : r.rows.back().metrics) j["metrics"][m.name] = {{"value", m.value}, {"unit", m.unit}};
     if (!sim.scene().colliders.empty())
         j["metrics"]["worst_penetration"] = {{"value", r.worst_penetration}, {"unit", "m"}, {"step", r.worst_penetration_step}};
+    if (r.windowed) {
+        nlohmann::json w = {{"from", r.window.from}, {"to", r.window.to}, {"states", r.window_states}, {"metrics", nlohmann::json::object()}};
+        for (const WindowStat& s : r.window_stats) w["metrics"][s.name] = {{"min", s.min}, {"mean", s.mean}, {"max", s.max}, {"unit", s.unit}};
+        j["window"] = w;
+    }
+    const LookChecks look = lookChecks(sim);
+    if (look.through_applies) j["metrics"]["triangles_through"] = {{"value", look.through}, {"unit", "1"}, {"of", look.triangles}};
+    if (look.flips_applies) j["metrics"]["turned_over"] = {{"value", look.flips.flipped}, {"unit", "1"}, {"of", look.flips.triangles}};
     j["notes"] = r.notes;
     j["warnings"] = nlohmann::json::array();
     for (const RunWarning& w : r.warnings) {

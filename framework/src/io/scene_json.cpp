@@ -489,6 +489,8 @@ Scene readScene(const json& doc, const std::string& file) {
     s.view.eye = view.vec3("eye", s.view.eye);
     s.view.target = view.vec3("target", s.view.target);
     s.view.fov = view.number("fov", s.view.fov, 1, 170);
+    s.view.look = view.text("look", "");
+    s.view.error = view.text("error", "");
     if (s.view.camera && (s.view.eye - s.view.target).norm() <= 0) view.fail("target", "equals view.eye");
     view.finish();
     r.finish();

@@ -23,6 +23,11 @@ void drawOverlay(const DrawData& d, const RenderOptions& opt, float left) {
 
     const bool edges_shown = opt.edges || d.triangles.empty();
     const float lh = ImGui::GetTextLineHeightWithSpacing();
+    if (!d.note.empty()) {
+        const ImVec2 q(left + 10, size.y - lh - 8), w = ImGui::CalcTextSize(d.note.c_str());
+        dl->AddRectFilled(ImVec2(q.x - 4, q.y - 3), ImVec2(q.x + w.x + 4, q.y + w.y + 3), IM_COL32(255, 255, 255, 200), 4);
+        dl->AddText(q, ink, d.note.c_str());
+    }
     if (!d.ghosts.empty()) {
         // Legend of the two spheres: simulated particle and analytic solution.
         const ImVec2 q(left + 10, size.y - 2 * lh - 8);

@@ -4,7 +4,9 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <utility>
 
@@ -13,6 +15,7 @@ namespace clothlab {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+const float kBackground[3] = {0.88f, 0.91f, 0.95f};  // the views' background, RGB
 
 void setMaterial(GLenum face, const Eigen::Vector3f& c, float spec, float shininess) {
     const float amb[4] = {0.35f * c[0], 0.35f * c[1], 0.35f * c[2], 1};
@@ -67,6 +70,28 @@ void drawFlatTriangles(const Matrix3X& corners) {
         for (int j = 0; j < 3; ++j) glVertex3d(corners(0, k + j), corners(1, k + j), corners(2, k + j));
     }
     glEnd();
+}
+
+// The convex hull of the points' (x, z), counter-clockwise seen from above (Andrew's monotone chain).
+std::vector<int> groundHull(const Matrix3X& x) {
+    std::vector<int> order(static_cast<size_t>(x.cols()));
+    for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return x(0, a) < x(0, b) || (x(0, a) == x(0, b) && x(2, a) < x(2, b)); });
+    const auto turn = [&](int o, int a, int b) {  // > 0: o -> a -> b turns counter-clockwise seen from +y
+        return (x(2, a) - x(2, o)) * (x(0, b) - x(0, o)) - (x(0, a) - x(0, o)) * (x(2, b) - x(2, o));
+    };
+    std::vector<int> h(2 * order.size());
+    size_t k = 0;
+    for (size_t i = 0; i < order.size(); ++i) {  // lower chain
+        while (k >= 2 && turn(h[k - 2], h[k - 1], order[i]) <= 0) --k;
+        h[k++] = order[i];
+    }
+    for (size_t i = order.size() - 1, t = k + 1; i-- > 0;) {  // upper chain
+        while (k >= t && turn(h[k - 2], h[k - 1], order[i]) <= 0) --k;
+        h[k++] = order[i];
+    }
+    h.resize(k > 1 ? k - 1 : k);
+    return h;
 }
 
 void planeAxes(const Vec3& n, Vec3& a, Vec3& b) {
@@ -125,32 +150,60 @@ Eigen::Vector3f strainColor(double strain, double range) {
     return s >= 0 ? Eigen::Vector3f(mid + s * (red - mid)) : Eigen::Vector3f(mid - s * (blue - mid));
 }
 
-void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height) {
-    glViewport(0, 0, width, height);
+void Renderer::lap(const char* pass) {
+    if (!timing_) return;
+    glFinish();
+    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    const double cpu = cpu_ ? cpu_() : 0.0;
+    if (pass) {
+        auto it = std::find_if(times_.begin(), times_.end(), [&](const RenderPassTime& t) { return std::strcmp(t.name, pass) == 0; });
+        if (it == times_.end()) times_.push_back({pass, 0.0, 0.0}), it = times_.end() - 1;
+        it->ms += 1e3 * (now - lap_);
+        it->cpu_ms += 1e3 * (cpu - lapCpu_);
+    }
+    lap_ = now, lapCpu_ = cpu;
+}
+
+void Renderer::clear(int width, int height) {
     glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, width, height);
+    glClearColor(kBackground[0], kBackground[1], kBackground[2], 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+void Renderer::fill(const Viewport& vp, int fb_height, const Eigen::Vector3f& rgb) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(vp.x, fb_height - vp.y - vp.height, vp.width, vp.height);
+    glClearColor(rgb[0], rgb[1], rgb[2], 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height) {
+    draw(d, cam, opt, Viewport{0, 0, width, height}, height);
+}
+
+void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, const Viewport& vp, int fb_height) {
+    lap(nullptr);
+    const int width = vp.width, height = vp.height;
+    glViewport(vp.x, fb_height - vp.y - vp.height, width, height);
+    glScissor(vp.x, fb_height - vp.y - vp.height, width, height);
+    glEnable(GL_SCISSOR_TEST);  // clear and draw only this part of the framebuffer
     glDisable(GL_DITHER);
-    glClearColor(0.93f, 0.94f, 0.96f, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClearColor(kBackground[0], kBackground[1], kBackground[2], 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glDisable(GL_TEXTURE_2D);
     glDisable(GL_LIGHTING);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
-    // Background: a soft vertical gradient.
+    // Background: the clear colour, a light blue-grey (a gradient quad over the whole view cost a
+    // full-screen pass of llvmpipe's fragment work per frame: docs/performance.md).
+    lap("background");
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    glDisable(GL_DEPTH_TEST);
-    glBegin(GL_QUADS);
-    glColor3f(0.97f, 0.97f, 0.98f);
-    glVertex2f(-1, -1);
-    glVertex2f(1, -1);
-    glColor3f(0.78f, 0.83f, 0.90f);
-    glVertex2f(1, 1);
-    glVertex2f(-1, 1);
-    glEnd();
-
     lights();  // in eye space, before the view matrix
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
@@ -180,7 +233,9 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     }
     const double cell = std::pow(10.0, std::floor(std::log10(scale * 0.5)));
     const double gx0 = std::round(cam.target.x() / cell) * cell, gz0 = std::round(cam.target.z() / cell) * cell;
-    const int ncell = static_cast<int>(std::ceil(3.0 * scale / cell));
+    // Out to 3 scale, at most 16 cells each way (the far lines crowd towards the horizon, and each line
+    // costs llvmpipe a blended pass across the view).
+    const int ncell = std::min(16, static_cast<int>(std::ceil(3.0 * scale / cell)));
     if (opt.ground) {
         if (ground_is_plane && opt.colliders) {
             glColor3f(0.86f, 0.87f, 0.88f);
@@ -208,20 +263,24 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
             glVertex3d(gx0 + ncell * cell, gy, gz0 + k * cell);
         }
         glEnd();
+        lap("ground and grid");
         // A soft shadow of the cloth and the particles straight down on the ground.
         glDepthMask(GL_FALSE);
         glColor4f(0.1f, 0.12f, 0.18f, 0.12f);
         const double sy = gy + 1e-3 * scale;
         if (!d.triangles.empty()) {
+            // The convex hull of the cloth projected straight down, one fan: a soft blob in place of
+            // every triangle's projection (which cost llvmpipe a triangle setup each, twice per frame
+            // with the cloth itself; docs/performance.md).
             TriangleList& shadow = scratch_;
-            shadow.xyz.resize(3 * static_cast<size_t>(d.x.cols()));
+            const std::vector<int> hull = groundHull(d.x);
+            shadow.xyz.clear();
             shadow.nrm.clear();
-            for (int i = 0; i < d.x.cols(); ++i) {
-                shadow.xyz[3 * i] = static_cast<float>(d.x(0, i));
-                shadow.xyz[3 * i + 1] = static_cast<float>(sy);
-                shadow.xyz[3 * i + 2] = static_cast<float>(d.x(2, i));
-            }
-            triangleIndices(d, shadow.idx);
+            shadow.idx.clear();
+            for (int i : hull)
+                for (const double v : {d.x(0, i), sy, d.x(2, i)}) shadow.xyz.push_back(static_cast<float>(v));
+            for (size_t k = 1; k + 1 < hull.size(); ++k)
+                shadow.idx.insert(shadow.idx.end(), {0u, static_cast<unsigned>(k), static_cast<unsigned>(k + 1)});
             drawTriangleList(shadow);
         }
         for (const Collider& c : d.colliders) {
@@ -247,6 +306,7 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
         glDisable(GL_BLEND);
     }
 
+    lap("shadow");
     // Colliders.
     if (opt.colliders) {
         glEnable(GL_LIGHTING);
@@ -261,8 +321,11 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
         glDisable(GL_LIGHTING);
     }
 
+    lap("colliders");
     if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
+    lap("cloth");
     if (opt.edges || d.triangles.empty()) drawEdges(d, opt, scale);
+    lap("edges");
     drawParticles(d, opt, scale);
 
     // Planes other than the ground: translucent panels with a border, drawn last so what lies behind shows.
@@ -291,7 +354,9 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
-    glFinish();
+    glDisable(GL_SCISSOR_TEST);
+    glFlush();  // llvmpipe rasterizes on its own threads from here; the caller may step the simulation meanwhile
+    lap("particles and planes");
 }
 
 void Renderer::triangleIndices(const DrawData& d, std::vector<unsigned>& idx) {

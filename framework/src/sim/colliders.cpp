@@ -18,9 +18,8 @@ Vec3 perpendicular(const Vec3& a) {
     return a.cross(t).normalized();
 }
 
-/// Closest point of triangle abc to x (Ericson, Real-Time Collision Detection, 5.1.5: the Voronoi
-/// regions of vertices, edges and face); `feature` says which: 0..2 vertex a, b, c; 3 + k edge k
-/// (0: ab, 1: bc, 2: ca); 6 the face.
+}  // namespace
+
 Vec3 closestOnTriangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c, int* feature) {
     const Vec3 ab = b - a, ac = c - a, ax = x - a;
     const double d1 = ab.dot(ax), d2 = ac.dot(ax);
@@ -40,6 +39,8 @@ Vec3 closestOnTriangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& 
     const double s = 1.0 / (va + vb + vc);
     return *feature = 6, a + ab * (vb * s) + ac * (vc * s);
 }
+
+namespace {
 
 /// Squared distance from x to an axis-aligned box (0 inside).
 double boxDistance2(const Vec3& x, const Vec3& lo, const Vec3& hi) {

@@ -397,10 +397,21 @@ void RunChecks::collect(RunResult& r) const {
 }
 
 RunResult runSimulation(Simulation& sim, long long steps, long long every,
-                        const std::function<void(const ReportRow&)>& on_row, bool strict) {
+                        const std::function<void(const ReportRow&)>& on_row, bool strict, const MetricWindow* window) {
     RunResult result;
     RunChecks checks(sim, strict);
     const auto t0 = std::chrono::steady_clock::now();
+    if (window) result.windowed = true, result.window = *window;
+    auto summarise = [&] {  // the state just reached, into the window's min, sum and max
+        if (!window || !window->contains(sim.state().t)) return;
+        const std::vector<Metric> now = sim.metrics();
+        if (result.window_states++ == 0)
+            for (const Metric& m : now) result.window_stats.push_back({m.name, m.unit, m.value, 0.0, m.value});
+        for (size_t i = 0; i < now.size() && i < result.window_stats.size(); ++i) {
+            WindowStat& w = result.window_stats[i];
+            w.min = std::min(w.min, now[i].value), w.max = std::max(w.max, now[i].value), w.mean += now[i].value;
+        }
+    };
     auto record = [&] {
         ReportRow row{result.steps, sim.state().t, result.wall, sim.metrics()};
         if (on_row) on_row(row);
@@ -408,9 +419,11 @@ RunResult runSimulation(Simulation& sim, long long steps, long long every,
     };
     auto done = [&] {
         checks.collect(result);
+        for (WindowStat& w : result.window_stats) w.mean /= static_cast<double>(result.window_states);  // the sum so far
         return result;
     };
     record();
+    summarise();
     while (result.steps < steps) {
         const std::string unstable = checks.step(sim, result.steps + 1);
         ++result.steps;
@@ -420,6 +433,7 @@ RunResult runSimulation(Simulation& sim, long long steps, long long every,
             result.message = unstable;
             return done();  // no metrics of a broken state
         }
+        summarise();
         if (result.steps % every == 0 || result.steps == steps) record();
     }
     checks.finish(sim);

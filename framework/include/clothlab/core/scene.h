@@ -196,6 +196,8 @@ struct ViewSpec {
     Vec3 eye{0, 0, 3};          ///< camera position, m
     Vec3 target{0, 0, 0};       ///< point looked at, m
     double fov = 35.0;          ///< vertical field of view, degrees
+    std::string look;           ///< one line for the lecturer: what to look at in this scene ("" = none)
+    std::string error;          ///< the metric a comparison plots as the error ("" = chosen: study/compare.h)
 };
 
 /// A whole scene, as loaded from JSON.

@@ -75,13 +75,13 @@ void symplecticEulerStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const Force
 
 /// Exercise 1.5 — one step of velocity Verlet (second order).
 ///
-/// Requirements, for forces that depend on the positions only (\f$ a^n = w\,F(x^n) \f$):
-/// \f[ x^{n+1} = x^n + \Delta t\,v^n + \tfrac{\Delta t^2}{2}\,a^n,\qquad
-///     v^{n+1} = v^n + \tfrac{\Delta t}{2}\,\big(a^n + a^{n+1}\big) \f]
-/// (Taylor to second order for x, the trapezoidal rule for v). Write it so that the force is evaluated
+/// Requirements, for forces that depend on the positions only (\f$ a^n = w\,F(x^n) \f$): the new position
+/// \f$ x^{n+1} \f$ agrees with the Taylor expansion of \f$ x(t^n + \Delta t) \f$ up to and including its
+/// \f$ \Delta t^2 \f$ term, taken with \f$ x^n, v^n, a^n \f$; the velocity changes by \f$ \Delta t \f$ times the
+/// mean of \f$ a^n \f$ and \f$ a^{n+1} = w\,F(x^{n+1}) \f$ (the trapezoidal rule). The force is evaluated
 /// exactly twice per step, at the old positions and at the new ones. Convention for velocity-dependent
 /// forces (damping): the second evaluation receives the velocity that already contains the \f$a^n\f$ half of
-/// the velocity change above and not yet the \f$a^{n+1}\f$ half (the method is then first order).
+/// the velocity change and not yet the \f$a^{n+1}\f$ half (the method is then first order).
 /// Second order (halving Δt quarters the error), energy bounded; pinned particles as in explicitEulerStep().
 /// @param x, v, w, force, dt  as in explicitEulerStep()
 void velocityVerletStep(Matrix3X& x, Matrix3X& v, const VectorX& w, const ForceField& force, double dt);

@@ -62,8 +62,8 @@ struct BendingStencil {
 /// Requirements: every component of every q_i agrees with central finite differences of d; since d
 /// does not change when the whole stencil is translated, \f$ \vec q_1+\vec q_2+\vec q_3+\vec q_4 = 0 \f$;
 /// the q_i rotate with the stencil and scale as 1/length. The q-vectors printed on the slides and in the
-/// paper are the negatives of these, \f$ -\partial d/\partial\vec p_i \f$ (the task sheet shows them and
-/// how the sign was found): do not copy them unchanged.
+/// paper follow the paper's conventions (the task sheet shows them): check their sign against finite
+/// differences of d before you use any of them.
 /// Zero-area triangles (|p2 × p3| or |p2 × p4| below 1e-12 m², positions relative to p1) and coincident
 /// points (degenerate: notation table): valid = false, d = −1, sinPhi = 0 and all q zero (never NaN). d is clamped to [−1, 1].
 /// @param p1, p2  the shared edge, m
@@ -76,7 +76,7 @@ BendingGradients bendingGradients(const Vec3& p1, const Vec3& p2, const Vec3& p3
 /// (sin φ and d from exercise 5.1).
 ///
 /// Requirements (derive the corrections with the general PBD projection and the chain rule; the task
-/// sheet's sign discussion is part of it):
+/// sheet's check of the slide's signs is part of it):
 /// - the corrections are mass-weighted steps along \f$ -\nabla_{\vec p_i} C \f$, like the distance
 ///   constraint's, so \f$ \sum_i m_i\Delta\vec p_i = 0 \f$ and \f$ \sum_i \vec p_i\times m_i\Delta\vec p_i = 0 \f$
 ///   (no momentum, no angular momentum) and a pinned particle (w = 0) does not move;

@@ -97,8 +97,8 @@ Vec3 projectCollisionConstraint(const Vec3& p, double w, double h, const Collisi
 /// particle's velocity after the solve into its normal part v_n (along n_s) and its tangential part v_t.
 /// Requirements:
 /// - restitution (coefficient e): the new normal velocity is the larger of v_n and the incoming
-///   normal velocity vnBefore reflected at the surface and scaled by e; a ball dropped from height H
-///   rebounds to e²H;
+///   normal velocity vnBefore reflected at the surface and scaled by e (a ball leaves a plane with e
+///   times the speed it hit it with);
 /// - Coulomb (kinetic) friction: the tangential speed shrinks by μ times the normal velocity change of
 ///   the solve (v_n − vnBefore, counted only when positive), keeps its direction, and stops at zero:
 ///   friction stops a particle but never reverses it; a block on an incline slides with g(sin θ − μ cos θ);

@@ -15,7 +15,8 @@ void printReportHeader(std::ostream& out, const ReportRow& first);
 void printReportRow(std::ostream& out, const ReportRow& row);
 
 /// Prints the summary: steps, simulated and wall time, time per step, why the run stopped (if it
-/// did), the final metrics, the worst penetration over the whole run (scenes with colliders), every
+/// did), the final metrics, the worst penetration over the whole run (scenes with colliders), with a
+/// MetricWindow every metric's min, mean and max over it (WindowStat), every
 /// warning (warningText(): what, since which step, what would help) and the table of passes that
 /// ran (wall time, calls, share).
 void printSummary(std::ostream& out, const Simulation& sim, const RunResult& result);
@@ -25,7 +26,8 @@ void printSummary(std::ostream& out, const Simulation& sim, const RunResult& res
 void writeReportCsv(const std::string& path, const RunResult& result);
 
 /// Writes the summary (scene, method, dt, steps, wall time, `cause` of a stop (causeName()), final
-/// metrics with `worst_penetration` {value, unit, step}, `warnings` [{kind, step, t, value, message,
+/// metrics with `worst_penetration` {value, unit, step}, with a MetricWindow `window` {from, to,
+/// states, metrics: {name: {min, mean, max, unit}}}, `warnings` [{kind, step, t, value, message,
 /// collider, particle, particles}], pass timings) as JSON.
 /// @throws InputError if the file cannot be written
 void writeSummaryJson(const std::string& path, const Simulation& sim, const RunResult& result);

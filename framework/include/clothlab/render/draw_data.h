@@ -43,6 +43,7 @@ struct DrawData {
     std::vector<Vec3> ghosts;                ///< where an analytic solution puts the particles (drawn translucent), m
     double t = 0.0;                          ///< simulated time, s (shown in the corner)
     std::string title;                       ///< one line shown in the corner (scene and method)
+    std::string note;                        ///< one line shown at the bottom-left ("" = none), e.g. lookChecksLine()
 
     /// Strain of edge e: \f$ \varepsilon_e = |x_i - x_j| / l_0 - 1 \f$ (0 when l0 = 0).
     /// @param e  edge index

@@ -6,7 +6,7 @@
 
 namespace clothlab {
 
-/// Adds the title line, the simulated time and (when edges are shown) the legend of edge colours
+/// Adds the title line, the simulated time, DrawData::note at the bottom-left and (when edges are shown) the legend of edge colours
 /// (by kind, or the strain colour bar) to the current ImGui frame's foreground.
 /// Call between ImGui::NewFrame() and ImGui::Render().
 /// @param d    what is drawn (title, t, which edge kinds exist)

@@ -6,6 +6,7 @@
 /// compiled once and linked into both programs; it links no GL library itself.
 #pragma once
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,17 +44,63 @@ struct RenderOptions {
     double ground_y = std::nan("");  ///< height of the ground grid, m (NaN: below the lowest point of this frame)
 };
 
+/// A rectangle of the framebuffer to draw into, in pixels, origin at the top-left corner (as the
+/// mouse and Camera::project() count).
+struct Viewport {
+    int x = 0;       ///< left edge, pixels
+    int y = 0;       ///< top edge, pixels
+    int width = 0;   ///< width, pixels
+    int height = 0;  ///< height, pixels
+};
+
+/// Wall time of one pass of Renderer::draw(), summed over the frames since Renderer::resetTimes().
+struct RenderPassTime {
+    const char* name;   ///< "background", "ground and grid", "shadow", "colliders", "cloth", "edges", "particles and planes"
+    double ms = 0.0;    ///< wall time, milliseconds, summed
+    double cpu_ms = 0.0;  ///< CPU time of every thread (the GL's too) by the clock given to setTiming(), ms, summed
+};
+
 /// Draws DrawData with a camera. Holds the few GL objects it creates (the cloth texture),
 /// so use one Renderer per GL context.
 class Renderer {
 public:
     /// Renders one frame into the current context's viewport of size width x height:
-    /// background gradient, ground grid, colliders, cloth surface, edges, particles.
+    /// background, ground grid and the cloth's shadow, colliders, cloth surface, edges, particles. Ends
+    /// with glFlush(), not glFinish(): the GL may still be drawing when it returns (reading the pixels
+    /// waits for it), so the caller can step the simulation meanwhile (llvmpipe draws on its own threads).
     /// @param d              what to draw
     /// @param cam            camera
     /// @param opt            options
     /// @param width, height  viewport size in pixels
     void draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, int width, int height);
+
+    /// The same into a part of the framebuffer (a split view): only `vp` is cleared and drawn, with
+    /// the projection of its own aspect ratio vp.width / vp.height.
+    /// @param d          what to draw
+    /// @param cam        camera
+    /// @param opt        options
+    /// @param vp         the rectangle, pixels from the top-left corner
+    /// @param fb_height  the framebuffer's height, pixels
+    void draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, const Viewport& vp, int fb_height);
+
+    /// Clears the whole framebuffer (colour and depth) to the background's light grey, e.g. before split views.
+    /// @param width, height  framebuffer size in pixels
+    void clear(int width, int height);
+    /// Fills a rectangle with one colour by clearing it (cheap for any GL, llvmpipe included), e.g. the
+    /// background of a panel that ImGui then draws without its own (a blended, textured fill per pixel).
+    /// @param vp         the rectangle, pixels from the top-left corner
+    /// @param fb_height  the framebuffer's height, pixels
+    /// @param rgb        the colour, components in [0, 1]
+    void fill(const Viewport& vp, int fb_height, const Eigen::Vector3f& rgb);
+
+    /// Times each pass of draw() (glFinish() after each, which costs a little: for measuring only).
+    /// @param on   time from now on, or stop
+    /// @param cpu  the process's CPU time, s (e.g. from getrusage(); empty: no CPU times)
+    void setTiming(bool on, std::function<double()> cpu = {}) { timing_ = on, cpu_ = std::move(cpu); }
+    /// The passes' times since the last resetTimes() (empty unless setTiming(true)).
+    const std::vector<RenderPassTime>& passTimes() const { return times_; }
+    /// Sets the passes' times to zero.
+    void resetTimes() { times_.clear(); }
 
 private:
     void drawSurface(const DrawData& d, double scale);
@@ -62,6 +109,13 @@ private:
     /// The cloth's triangles as indices into its particles (3 per triangle).
     static void triangleIndices(const DrawData& d, std::vector<unsigned>& idx);
 
+    void lap(const char* pass);   ///< with timing: glFinish(), then books the time since the last lap on `pass`
+
+    bool timing_ = false;         ///< setTiming()
+    std::vector<RenderPassTime> times_;  ///< passTimes()
+    double lap_ = 0.0;            ///< the time of the last lap, s (steady clock)
+    double lapCpu_ = 0.0;         ///< the CPU time then, s
+    std::function<double()> cpu_; ///< setTiming()
     unsigned texture_ = 0;        ///< checker texture of the cloth (0: not created yet)
     TriangleList scratch_;        ///< the cloth or its shadow, rebuilt every frame
     std::vector<float> lines_;    ///< scratch: line or point vertices, 3 floats each

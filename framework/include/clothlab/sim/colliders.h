@@ -53,6 +53,14 @@ private:
     std::vector<Node> nodes_;     // nodes_[0] is the root
 };
 
+/// Closest point of triangle abc to x (Ericson, Real-Time Collision Detection, 5.1.5: the Voronoi
+/// regions of vertices, edges and face).
+/// @param x        the point, m
+/// @param a, b, c  the triangle's corners, m
+/// @param feature  receives which feature is closest: 0..2 vertex a, b, c; 3 + k edge k (0: ab, 1: bc, 2: ca); 6 the face
+/// @return         the closest point q of the triangle, \f$ |\vec x - \vec q| \f$ minimal
+Vec3 closestOnTriangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c, int* feature);
+
 /// The scene's plane collider as exercise 6.1 takes it (point, normal, μ, e).
 /// @param c  a collider of type Plane
 /// @return   its PlaneCollider

@@ -159,6 +159,28 @@ double energyScale(const Simulation& sim);
 /// @param depth  the depth of interest D > 0, m
 double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth);
 
+/// A span of simulated time over which a run summarises every metric (`clothlab run --window T0,T1`):
+/// a quantity that oscillates (the curtain's max strain swings with its sway) is measured over a
+/// stated window, not at one moment.
+struct MetricWindow {
+    double from = 0.0;  ///< start t0, s
+    double to = 0.0;    ///< end t1 ≥ t0, s
+    /// Whether the state at time t (s) lies in [t0, t1]; a tolerance of 1e-9 s absorbs the rounding
+    /// of t accumulated over the steps.
+    /// @param t  simulated time, s
+    bool contains(double t) const { return t >= from - 1e-9 && t <= to + 1e-9; }
+};
+
+/// One metric over a MetricWindow: over the states after every step (and the start) whose time t
+/// lies in the window, \f$ \min_t m(t) \f$, the mean \f$ \frac{1}{N}\sum_t m(t) \f$ and \f$ \max_t m(t) \f$.
+struct WindowStat {
+    std::string name;   ///< the metric's name, e.g. "max_strain"
+    std::string unit;   ///< its unit
+    double min = 0.0;   ///< least value in the window
+    double mean = 0.0;  ///< mean over the N states in the window
+    double max = 0.0;   ///< largest value in the window
+};
+
 /// What runSimulation() did.
 struct RunResult {
     long long steps = 0;          ///< steps done
@@ -172,6 +194,10 @@ struct RunResult {
     std::vector<ReportRow> rows;  ///< one row every `every` steps and one at the end
     std::vector<std::string> notes;  ///< what a reader should know that does not make the run wrong, e.g. an
                                      ///< energy error above kEnergyGrowthBound that stays bounded (accuracy, not stability)
+    bool windowed = false;           ///< a MetricWindow was given
+    MetricWindow window;             ///< that window, s
+    long long window_states = 0;     ///< the states N summarised in it (0: the run did not reach it)
+    std::vector<WindowStat> window_stats;  ///< every metric over the window (empty when N = 0)
 };
 
 /// The checks of a run beside the step: the stop causes of stepAndCheck() and, without stopping,
@@ -251,7 +277,10 @@ private:
 /// @param every   report interval in steps (≥ 1)
 /// @param on_row  called with each row as it is recorded (progress output); may be empty
 /// @param strict  the first warning stops the run (RunChecks)
+/// @param window  if given, every metric is also summarised (WindowStat) over the states of every step
+///                whose time lies in it, whatever `every` is
 RunResult runSimulation(Simulation& sim, long long steps, long long every,
-                        const std::function<void(const ReportRow&)>& on_row = {}, bool strict = false);
+                        const std::function<void(const ReportRow&)>& on_row = {}, bool strict = false,
+                        const MetricWindow* window = nullptr);
 
 }  // namespace clothlab
