@@ -12,7 +12,7 @@
 # Usage: hostile_test.sh SOURCE_DIR GRADER KIT full|fast [name-regex] [STAGES]
 set -u
 root=$1 grader=$2 kit=$3 mode=$4 only=${5:-.} stages=${6:-}
-grade_only=(); for s in ${stages//,/ }; do grade_only+=(--only "$s"); done
+grade_only=(); for s in ${stages//,/ }; do grade_only+=(--stage "$s"); done
 hostile=$root/tests/instructor/hostile
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 chmod 711 "$tmp"  # container mode: a run's user passes through to its work folder (bubblewrap mounts it)
@@ -60,7 +60,7 @@ else  # one run per attacked stage, that stage only; the gradebooks joined (othe
     mkdir -p "$tmp/class_$s"
     mv "$tmp/class/reference" "$tmp/class_$s/reference"
     for st in "${!stage_of[@]}"; do [[ ${stage_of[$st]} == "$s" ]] && mv "$tmp/class/$st" "$tmp/class_$s/"; done
-    "$grader" --kit "$kit" --class "$tmp/class_$s" --out "$tmp/out_$s" --only "$s" --timeout 8 >"$tmp/grade_$s.log" 2>&1 \
+    "$grader" --kit "$kit" --class "$tmp/class_$s" --out "$tmp/out_$s" --stage "$s" --timeout 8 >"$tmp/grade_$s.log" 2>&1 \
       || { tail -20 "$tmp/grade_$s.log"; fail "the class grading run for stage $s failed"; }
     mv "$tmp/class_$s/reference" "$tmp/class/reference"
     [[ -f $book ]] || head -1 "$tmp/out_$s/gradebook.csv" >"$book"
