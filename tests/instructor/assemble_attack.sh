@@ -11,6 +11,8 @@
 #   //@tail       lines put at the end of the file
 #   //@no-stub    the lines after it are the whole file (an attack that needs no stub)
 #   //@use NAME   (inside a section) the lines of tests/instructor/hostile/lib/NAME.cpp, shared by attacks
+#   //@stub NN    (inside a section) today's stub of stage NN from its first #include on: another stage's
+#                 functions with their signatures as the stage's header and stub spell them today
 set -eu
 root=$1 name=$2 stage=$3 out=$4
 snippet=$root/tests/instructor/hostile/$name.cpp
@@ -19,7 +21,7 @@ stub=$(ls "$root"/exercises/"$stage"_*/*.cpp 2>/dev/null | head -1)
 [[ -n $stub ]] || { echo "assemble_attack.sh: no stub for stage $stage in $root/exercises" >&2; exit 2; }
 dir=$out/$(basename "$(dirname "$stub")")
 mkdir -p "$dir"
-awk -v snippet="$snippet" -v libdir="$root/tests/instructor/hostile/lib" '
+awk -v snippet="$snippet" -v libdir="$root/tests/instructor/hostile/lib" -v exercises="$root/exercises" '
   BEGIN {
     sec = "top"
     while ((getline line < snippet) > 0) {
@@ -29,6 +31,13 @@ awk -v snippet="$snippet" -v libdir="$root/tests/instructor/hostile/lib" '
         if ((getline part < lib) <= 0) { print snippet ": " line ": no " lib > "/dev/stderr"; bad = 1; exit 2 }
         do text[sec] = text[sec] part "\n"; while ((getline part < lib) > 0)
         close(lib); continue
+      }
+      if (line ~ /^\/\/@stub [0-9][0-9]$/) {
+        other = ""; cmd = "ls " exercises "/" substr(line, 9) "_*/*.cpp 2>/dev/null | head -1"; cmd | getline other; close(cmd)
+        if (other == "") { print snippet ": " line ": no stub of that stage" > "/dev/stderr"; bad = 1; exit 2 }
+        from = 0
+        while ((getline part < other) > 0) if (from || (from = part ~ /^#include/)) text[sec] = text[sec] part "\n"
+        close(other); continue
       }
       if (line ~ /^\/\/@/) { print snippet ": unknown section marker: " line > "/dev/stderr"; bad = 1; exit 2 }
       text[sec] = text[sec] line "\n"

@@ -30,7 +30,7 @@ mkdir -p "$tmp/class"
 cp -r "$root/solutions" "$tmp/class/reference"
 declare -A stage_of kind_of open_of
 n=0
-while IFS=$'\t' read -r name stage what expect; do
+while IFS=$'\t' read -r name stage _defence what expect; do
   [[ $name == name || -z $name || ! $name =~ $only ]] && continue
   student="$name"; [[ $name == benign ]] && student="benign_$stage"
   # The attack snippet on today's stub of its stage (assemble_attack.sh), in place of the reference's stage.

@@ -89,8 +89,10 @@ std::vector<std::string> bwrapArgs(const SandboxRun& run) {
     std::vector<std::string> a = {"bwrap", "--die-with-parent", "--new-session", "--hostname", "grader", "--clearenv",
                                   "--setenv", "PATH", "/usr/bin", "--setenv", "HOME", "/tmp", "--ro-bind", "/usr", "/usr"};
     for (const auto& [name, value] : run.env) a.insert(a.end(), {"--setenv", name, path(value)});
-    if (root) a.insert(a.begin() + 1, {"--unshare-ipc", "--unshare-pid", "--unshare-net", "--unshare-uts", "--unshare-cgroup-try"});
+    if (root) a.insert(a.begin() + 1, {"--unshare-ipc", "--unshare-pid", "--unshare-uts", "--unshare-cgroup-try"});
     else a.insert(a.begin() + 1, {"--unshare-all", "--cap-drop", "ALL"});
+    if (!weakened("network")) a.insert(a.begin() + 1, "--unshare-net");  // test tool only: the machine's network
+    else if (!root) a.push_back("--share-net");  // after --unshare-all
     if (host) a.insert(a.end(), {"--ro-bind", "/", "/", "--dev", "/dev", "--bind", "/tmp", "/tmp", "--bind", "/var/tmp", "/var/tmp"});
     for (const std::string l : {"/lib", "/lib64", "/bin", "/sbin"})
         if (host) break;
@@ -98,6 +100,7 @@ std::vector<std::string> bwrapArgs(const SandboxRun& run) {
         else if (fs::exists(l)) a.insert(a.end(), {"--ro-bind", l, l});
     if (!host && fs::exists("/etc/ld.so.cache")) a.insert(a.end(), {"--ro-bind", "/etc/ld.so.cache", "/etc/ld.so.cache"});
     if (!host) a.insert(a.end(), {"--dev", "/dev", "--perms", "1777", "--size", std::to_string(run.limits.file_size * 2), "--tmpfs", "/tmp"});
+    if (!host && weakened("proc")) a.insert(a.end(), {"--proc", "/proc"});  // test tool only: the process's /proc
     std::set<std::string> parents;  // the folders the mounts sit in, world-readable (bwrap would make them for root alone)
     for (const auto& m : run.mounts)
         for (fs::path p = m.inside.parent_path(); !host && p != p.root_path() && !p.empty(); p = p.parent_path()) parents.insert(p.string());

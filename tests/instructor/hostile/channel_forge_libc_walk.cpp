@@ -3,9 +3,10 @@
 // 1. From printf's address, walk down page by page to libc's ELF header and resolve `write` and
 //    `_exit` from libc's dynamic symbol table by hand (a dlsym without dlsym: the object screen
 //    only sees the undefined symbols printf/memcpy/strcmp/malloc/snprintf).
-// 2. Scan the heap downwards from a fresh allocation for the channel secret (64 hex digits, the
-//    ChannelReporter's std::string) and the stack upwards for "--gtest_filter=NAME".
-// 3. write(4, "end NAME passed SECRET\nexit SECRET\n") and _exit(0) before the test's EXPECTs run.
+// 2. Scan the stack upwards for "--gtest_filter=NAME".
+// 3. write(3, "end NAME passed\n") (the test process's channel: the test's `start NAME` is on it
+//    already) and _exit(0) before the test's EXPECTs run. (Against the grader of be6956f it also
+//    needed the channel's secret from the heap; today's channel has none, README "Red team 2".)
 // No reinterpret_cast, no cast at all: integers become pointers through memcpy.
 //@head
 #include <cstdint>
@@ -46,20 +47,9 @@ Addr librarySymbol(const char* name) {
     return 0;
 }
 
-bool hexDigit(unsigned char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); }
-
 void forge() {
     static int tried = 0;
     if (tried++) return;
-    // The secret: 64 hex digits and a NUL, somewhere below a fresh allocation on the heap.
-    static void* probe = std::malloc(100000);
-    Addr secret = 0;
-    int run = 0;
-    for (Addr q = addr(probe); q > 0x10000; --q) {
-        if (hexDigit(rd8(q))) { ++run; continue; }
-        if (run == 64 && rd8(q + 65) == 0) { secret = q + 1; break; }
-        run = 0;
-    }
     // The test's name: "--gtest_filter=NAME" among argv, at the top of the stack.
     volatile int here = 0;
     Addr name = 0;
@@ -69,15 +59,12 @@ void forge() {
             break;
         }
     }
-    if (!secret || !name) return;
-    char s[65];
-    std::memcpy(s, as<const void*>(secret), 64);
-    s[64] = 0;
+    if (!name) return;
     char line[1024];
-    const int len = std::snprintf(line, sizeof line, "end %s passed %s\nexit %s\n", as<const char*>(name), s, s);
+    const int len = std::snprintf(line, sizeof line, "end %s passed\n", as<const char*>(name));
     const Addr w = librarySymbol("write"), x = librarySymbol("_exit");
     if (!w || !x) return;
-    as<long (*)(int, const void*, unsigned long)>(w)(4, line, static_cast<unsigned long>(len));
+    as<long (*)(int, const void*, unsigned long)>(w)(3, line, static_cast<unsigned long>(len));
     as<void (*)(int)>(x)(0);
 }
 
