@@ -13,6 +13,8 @@
 #   //@use NAME   (inside a section) the lines of tests/instructor/hostile/lib/NAME.cpp, shared by attacks
 #   //@stub NN    (inside a section) today's stub of stage NN from its first #include on: another stage's
 #                 functions with their signatures as the stage's header and stub spell them today
+#   @TREE@        (anywhere) the absolute path of SOURCE_DIR: an attacker who knows where the instructor's
+#                 tree is (the absolute-path attacks; without it their guesses hold on one machine only)
 set -eu
 root=$1 name=$2 stage=$3 out=$4
 snippet=$root/tests/instructor/hostile/$name.cpp
@@ -21,10 +23,11 @@ stub=$(ls "$root"/exercises/"$stage"_*/*.cpp 2>/dev/null | head -1)
 [[ -n $stub ]] || { echo "assemble_attack.sh: no stub for stage $stage in $root/exercises" >&2; exit 2; }
 dir=$out/$(basename "$(dirname "$stub")")
 mkdir -p "$dir"
-awk -v snippet="$snippet" -v libdir="$root/tests/instructor/hostile/lib" -v exercises="$root/exercises" '
+awk -v snippet="$snippet" -v libdir="$root/tests/instructor/hostile/lib" -v exercises="$root/exercises" -v tree="$(cd "$root" && pwd)" '
   BEGIN {
     sec = "top"
     while ((getline line < snippet) > 0) {
+      gsub(/@TREE@/, tree, line)
       if (line ~ /^\/\/@(head|each|tail|no-stub)$/ || line ~ /^\/\/@task [0-9]+\.[0-9]+$/) { sec = substr(line, 4); have[sec] = 1; continue }
       if (line ~ /^\/\/@use [a-z_]+$/) {
         lib = libdir "/" substr(line, 8) ".cpp"

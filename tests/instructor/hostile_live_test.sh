@@ -25,7 +25,7 @@
 # `planted_dead`; the test then passes only when it names exactly that attack dead.
 # Usage: hostile_live_test.sh SOURCE_DIR WEAKENED_GRADER KIT [name-regex] [--plant-dead]
 set -u
-root=$1 grader=$2 kit=$3 only=${4:-.} plant=${5:-}
+root=$(cd "$1" && pwd) grader=$(realpath "$2") kit=$(realpath "$3") only=${4:-.} plant=${5:-}  # absolute: the attacks look for them
 hostile=$root/tests/instructor/hostile
 bound=150
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -33,7 +33,7 @@ chmod 711 "$tmp"
 fail() { echo "FAIL: $*"; exit 1; }
 [[ -x $grader ]] || fail "no $grader (build clothlab-grade-weakened)"
 
-declare -A stage_of defence_of known_dead  # known_dead: attacks.tsv's expect `dead` (README: why)
+declare -A stage_of=() defence_of=() known_dead=()  # known_dead: attacks.tsv's expect `dead` (README: why)
 groups=()
 assemble() {  # assemble STUDENT SNIPPET-NAME STAGE: the reference with the attacked stage's folder replaced
   bash "$root/tests/instructor/assemble_attack.sh" "$root" "$2" "$3" "$tmp/attack_$1" || fail "attacks.tsv: $2: cannot put the attack together"

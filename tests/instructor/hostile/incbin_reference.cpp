@@ -3,7 +3,9 @@
 // The hardened grader must give this file 0 points on stage 06.
 // ATTACK: .incbin copies any file the assembler can open into the object file. The sandboxed compiler
 // must fail here (the files are not in its view); if a path exists, the build embeds it.
-#if __has_include("/work/main/solutions/06_collision/collision.cpp")
+#if __has_include("@TREE@/solutions/06_collision/collision.cpp")
+#define HOSTILE_TREE "@TREE@"
+#elif __has_include("/work/main/solutions/06_collision/collision.cpp")
 #define HOSTILE_TREE "/work/main"
 #elif __has_include("/work/wt-hostile/solutions/06_collision/collision.cpp")
 #define HOSTILE_TREE "/work/wt-hostile"
