@@ -1,7 +1,23 @@
-// The OpenGL renderer (fixed-function pipeline; works in OSMesa, EGL and a GLFW window alike).
+// The OpenGL renderer (fixed-function pipeline; works in OSMesa, EGL and a GLFW window alike, and in a
+// browser through Emscripten's GL emulation: ./lab web, cmake/web.cmake).
 #include "clothlab/render/renderer.h"
 
 #include <GL/gl.h>
+
+#ifdef CLOTHLAB_WEB
+// The browser build's one difference: Emscripten's emulation of fixed-function GL on WebGL
+// (-sLEGACY_GL_EMULATION) has the float forms of these calls only, and no separate specular colour
+// (it adds the specular term to the colour before texturing, the same here: lit surfaces are not textured),
+// and one material for both sides (setMaterial()).
+extern "C" {
+void glVertex3d(GLdouble x, GLdouble y, GLdouble z) { glVertex3f(GLfloat(x), GLfloat(y), GLfloat(z)); }
+void glNormal3d(GLdouble x, GLdouble y, GLdouble z) { glNormal3f(GLfloat(x), GLfloat(y), GLfloat(z)); }
+void glMaterialf(GLenum face, GLenum pname, GLfloat v) { glMaterialfv(face, pname, &v); }
+void glLightModeli(GLenum pname, GLint v) {
+    if (pname == GL_LIGHT_MODEL_TWO_SIDE) glLightModelf(pname, GLfloat(v));
+}
+}
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +34,9 @@ constexpr double kPi = 3.14159265358979323846;
 const float kBackground[3] = {0.88f, 0.91f, 0.95f};  // the views' background, RGB
 
 void setMaterial(GLenum face, const Eigen::Vector3f& c, float spec, float shininess) {
+#ifdef CLOTHLAB_WEB
+    if (face == GL_BACK) return;  // the emulation has one material for both sides: back faces look like the front
+#endif
     const float amb[4] = {0.35f * c[0], 0.35f * c[1], 0.35f * c[2], 1};
     const float dif[4] = {c[0], c[1], c[2], 1};
     const float sp[4] = {spec, spec, spec, 1};
