@@ -55,5 +55,5 @@ endif()
 target_link_options(clothlab-web PRIVATE -fexceptions -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
   -sLEGACY_GL_EMULATION=1 -sALLOW_MEMORY_GROWTH=1 ${_preload})
 set_target_properties(clothlab-web PROPERTIES OUTPUT_NAME clothlab SUFFIX .js)
-add_custom_command(TARGET clothlab-web POST_BUILD
-  COMMAND ${CMAKE_COMMAND} -E copy "${PROJECT_SOURCE_DIR}/web/index.html" "$<TARGET_FILE_DIR:clothlab-web>/index.html")
+# The page (a change re-runs the configure step, which copies it again).
+configure_file(web/index.html "${CMAKE_BINARY_DIR}/bin/index.html" COPYONLY)

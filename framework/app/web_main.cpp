@@ -3,6 +3,8 @@
 // through Emscripten's GL emulation (the build switch CLOTHLAB_WEB, cmake/web.cmake).
 //   index.html?scene=NAME          opens scenes/NAME.json (default: pbd_sphere)
 //   index.html?scene=NAME&steps=N  runs exactly N steps, then pauses (the browser test, tests/web/)
+//   &set=KEY=VALUE (repeatable)    overrides a scene field, as ./lab gui --set
+//   &timing=1                      times the frame's parts (the status' app.timings_ms; benchmarks/web_step.sh)
 // Each frame it publishes the status: window.clothlab (an object) and the same as JSON in the element
 // with id clothlab-status (so chromium --headless --dump-dom reads it).
 #include <GLFW/glfw3.h>
@@ -20,6 +22,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/gui/app.h"
@@ -28,9 +31,10 @@ namespace {
 
 using namespace clothlab;
 
-// The value of parameter NAME in the page's query string QUERY ("?scene=pbd_sphere&steps=200"; index.html
-// passes it as the program's argument), percent-decoded; "" when missing.
-std::string urlParameter(const std::string& query, const std::string& name) {
+// The values of parameter NAME in the page's query string QUERY ("?scene=pbd_sphere&steps=200"; index.html
+// passes it as the program's argument), percent-decoded, in their order.
+std::vector<std::string> urlParameters(const std::string& query, const std::string& name) {
+    std::vector<std::string> out;
     size_t at = query.empty() || query[0] != '?' ? 0 : 1;
     while (at < query.size()) {
         size_t end = query.find('&', at);
@@ -45,11 +49,17 @@ std::string urlParameter(const std::string& query, const std::string& name) {
                     v += static_cast<char>(std::stoi(raw.substr(i + 1, 2), nullptr, 16)), i += 2;
                 else v += raw[i] == '+' ? ' ' : raw[i];
             }
-            return v;
+            out.push_back(v);
         }
         at = end + 1;
     }
-    return "";
+    return out;
+}
+
+// The first value of parameter NAME ("" when missing).
+std::string urlParameter(const std::string& query, const std::string& name) {
+    const std::vector<std::string> v = urlParameters(query, name);
+    return v.empty() ? "" : v.front();
 }
 
 struct Web {
@@ -170,6 +180,8 @@ int main(int argc, char** argv) {
         o.scene = web.error.empty() ? path : "";
         o.scenes_dir = "scenes";
         o.play = web.stop_at < 0;
+        o.sets = urlParameters(query, "set");          // ?set=cloth.nx=64: as ./lab gui --set
+        o.timing = urlParameter(query, "timing") == "1";  // ?timing=1: the frame's parts in the status (app.timings_ms)
         web.app = std::make_unique<App>(o);
     } catch (const InputError& e) {
         web.error = std::string("error: ") + e.what();
