@@ -23,7 +23,7 @@ trap 'kill $server 2>/dev/null; rm -rf "$tmp"' EXIT
 sleep 1
 set64="set=cloth.nx=64&set=cloth.ny=64"
 echo "load: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores), $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u '+%Y-%m-%d %H:%M UTC'), $(chromium --version 2>/dev/null | head -1)"
-native=$("$build/bin/clothlab" run scenes/pbd_sphere.json --set cloth.nx=64 --set cloth.ny=64 --set solver.threads=1 --steps "$steps" --quiet 2>&1 \
+native=$("${CLOTHLAB_NATIVE:-$build/bin/clothlab}" run scenes/pbd_sphere.json --set cloth.nx=64 --set cloth.ny=64 --set solver.threads=1 --steps "$steps" --quiet 2>&1 \
          | awk '/^passes that ran/ { on = 1; next } on && / s +[0-9]+ calls/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "s") { t += $i; break } } END { printf "%.3f", 1000 * t }')
 python3 tests/web/page_run.py "http://127.0.0.1:$port/index.html?scene=pbd_sphere&$set64&steps=$steps" --seconds 300 --until-done >"$tmp/steps.json"
 web=$(jq -r --argjson n "$steps" '.app.runs[0].wall * 1000 | . * 1000 | round / 1000' "$tmp/steps.json")

@@ -6,17 +6,46 @@
 
 #ifdef CLOTHLAB_WEB
 // The browser build's one difference: Emscripten's emulation of fixed-function GL on WebGL
-// (-sLEGACY_GL_EMULATION) has the float forms of these calls only, and no separate specular colour
-// (it adds the specular term to the colour before texturing, the same here: lit surfaces are not textured),
-// and one material for both sides (setMaterial()).
-extern "C" {
-void glVertex3d(GLdouble x, GLdouble y, GLdouble z) { glVertex3f(GLfloat(x), GLfloat(y), GLfloat(z)); }
-void glNormal3d(GLdouble x, GLdouble y, GLdouble z) { glNormal3f(GLfloat(x), GLfloat(y), GLfloat(z)); }
-void glMaterialf(GLenum face, GLenum pname, GLfloat v) { glMaterialfv(face, pname, &v); }
-void glLightModeli(GLenum pname, GLint v) {
+// (-sLEGACY_GL_EMULATION, cmake/web.cmake). Between glBegin() and glEnd() it takes a vertex's
+// attributes in the order they are called and needs every one for every vertex, where GL keeps a
+// current colour and normal: the calls below keep them and give each vertex both. It has the float
+// forms of these calls only, no separate specular colour (it adds the specular term before
+// texturing, the same here: lit surfaces are not textured), one material for both sides
+// (setMaterial()), and reads client-side indices as 16-bit only (drawTriangleList()).
+namespace {
+struct Immediate {
+    bool inside = false;
+    GLfloat color[4] = {1, 1, 1, 1};
+    GLfloat normal[3] = {0, 0, 1};
+} immediate;
+void webBegin(GLenum mode) { immediate.inside = true, glBegin(mode); }
+void webEnd() { immediate.inside = false, glEnd(); }
+void webColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+    immediate.color[0] = r, immediate.color[1] = g, immediate.color[2] = b, immediate.color[3] = a;
+    if (!immediate.inside) glColor4f(r, g, b, a);
+}
+void webColor3f(GLfloat r, GLfloat g, GLfloat b) { webColor4f(r, g, b, 1); }
+void webNormal3d(GLdouble x, GLdouble y, GLdouble z) {
+    immediate.normal[0] = GLfloat(x), immediate.normal[1] = GLfloat(y), immediate.normal[2] = GLfloat(z);
+}
+void webVertex3d(GLdouble x, GLdouble y, GLdouble z) {
+    glColor4f(immediate.color[0], immediate.color[1], immediate.color[2], immediate.color[3]);
+    glNormal3f(immediate.normal[0], immediate.normal[1], immediate.normal[2]);
+    glVertex3f(GLfloat(x), GLfloat(y), GLfloat(z));
+}
+void webMaterialf(GLenum face, GLenum pname, GLfloat v) { glMaterialfv(face, pname, &v); }
+void webLightModeli(GLenum pname, GLint v) {
     if (pname == GL_LIGHT_MODEL_TWO_SIDE) glLightModelf(pname, GLfloat(v));
 }
-}
+}  // namespace
+#define glBegin webBegin
+#define glEnd webEnd
+#define glColor4f webColor4f
+#define glColor3f webColor3f
+#define glNormal3d webNormal3d
+#define glVertex3d webVertex3d
+#define glMaterialf webMaterialf
+#define glLightModeli webLightModeli
 #endif
 
 #include <algorithm>
@@ -148,7 +177,14 @@ void drawTriangleList(const TriangleList& t) {
         glEnableClientState(GL_NORMAL_ARRAY);
         glNormalPointer(GL_FLOAT, 0, t.nrm.data());
     }
+#ifdef CLOTHLAB_WEB
+    // The emulation reads indices from client memory as 16-bit only (up to 65536 vertices: a 256 x 256 cloth).
+    static std::vector<unsigned short> idx16;
+    idx16.assign(t.idx.begin(), t.idx.end());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx16.size()), GL_UNSIGNED_SHORT, idx16.data());
+#else
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(t.idx.size()), GL_UNSIGNED_INT, t.idx.data());
+#endif
     glDisableClientState(GL_NORMAL_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
 }
