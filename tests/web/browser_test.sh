@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # The app in a real browser (./lab web's build): headless chromium (SwiftShader, no GPU) loads the page
 # from a local server (python3's http.server), runs SCENE for exactly STEPS steps (?steps=N: then it
-# pauses) and the page's status (window.clothlab, mirrored as JSON into #clothlab-status) must show: no console error, every step done, positions finite, the cloth moved (its
-# centroid at least 1 cm from the scene's start), and the same centroid as the native run of the same
-# scene and steps (clothlab run --steps N --dump) within TOL metres (default 1e-3 m = 1 mm). The
-# screenshot is kept in TMP/page.png; the status in TMP/status.json.
+# pauses). The screenshot must show a scene (at least 2 % of the 3-D view not background,
+# view_pixels.py) and the page's status (window.clothlab, mirrored as JSON into #clothlab-status):
+# no console error, every step done, positions finite, the cloth moved (its centroid at least 1 cm
+# from the scene's start), and the same centroid as the native run of the same scene and steps
+# (clothlab run --steps N --dump) within TOL metres (default 1e-3 m = 1 mm). The screenshot is kept
+# in TMP/page.png, the status in TMP/status.json.
 #   browser_test.sh WEBDIR CLOTHLAB SCENES_DIR TMP SCENE STEPS [TOL]
 # With PLANT (environment) set, a temp copy of the page is broken first: PLANT=console-error adds a
-# console.error() to the page; PLANT=steps compares with the native run of STEPS + 1 steps (one step off). Then
-# the script must fail with the check that PLANT names (the tests web.planted_*).
+# console.error() to the page; PLANT=blank hides the canvas; PLANT=steps compares with the native run
+# of STEPS + 1 steps (one step off). Then the script must fail with the check that PLANT names (the
+# tests web.planted_*).
 #   browser_test.sh --unknown-scene WEBDIR TMP: ?scene=no_such_scene shows the message, not a blank page.
 set -uo pipefail
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -23,6 +26,8 @@ rm -rf "$tmp" && mkdir -p "$tmp/site"
 cp "$web"/index.html "$web"/clothlab.* "$tmp/site/"
 if [[ ${PLANT:-} == console-error ]]; then
   sed -i 's|</body>|<script>console.error("planted console error")</script></body>|' "$tmp/site/index.html"
+elif [[ ${PLANT:-} == blank ]]; then
+  sed -i 's|</style>|canvas { visibility: hidden; }</style>|' "$tmp/site/index.html"
 fi
 
 # The page's own server on a free port.
@@ -42,6 +47,9 @@ timeout 300 python3 "$(dirname "$0")/page_run.py" "$url" --seconds "$seconds" --
 jq -e '.frames > 0' "$tmp/status.json" >/dev/null 2>&1 \
   || fail "the app did not start (no frame in window.clothlab): $(jq -c '.console_errors' "$tmp/status.json" 2>/dev/null | head -c 600)"
 jq -e '.element_mirrors_status' "$tmp/status.json" >/dev/null || fail "#clothlab-status does not mirror window.clothlab"
+# The screenshot: at least 2 % of the 3-D view (right of the panel) is not the background: a scene is drawn.
+drawn=$(python3 "$(dirname "$0")/view_pixels.py" "$tmp/page.png" 0.3)
+awk -v d="$drawn" 'BEGIN { exit !(d >= 0.02) }' || fail "screenshot: only $drawn of the view is not background ($tmp/page.png): a blank canvas"
 errors=$(jq -r '.console_errors | length' "$tmp/status.json")
 ((errors == 0)) || fail "console error: $(jq -c '.console_errors' "$tmp/status.json" | head -c 600)"
 
