@@ -136,7 +136,7 @@ void frame() {
         web.app->frame(w, h);
     }
     if (!web.error.empty()) {  // never a blank canvas: the page's own error in a window of its own
-        ImGui::SetNextWindowPos(ImVec2(20, 20));
+        ImGui::SetNextWindowPos(ImVec2(370, 60));  // over the 3-D view, beside the panel
         ImGui::Begin("clothlab: error", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", web.error.c_str());
         ImGui::End();
