@@ -1,7 +1,52 @@
-// The OpenGL renderer (fixed-function pipeline; works in OSMesa, EGL and a GLFW window alike).
+// The OpenGL renderer (fixed-function pipeline; works in OSMesa, EGL and a GLFW window alike, and in a
+// browser through Emscripten's GL emulation: ./lab web, cmake/web.cmake).
 #include "clothlab/render/renderer.h"
 
 #include <GL/gl.h>
+
+#ifdef CLOTHLAB_WEB
+// The browser build's one difference: Emscripten's emulation of fixed-function GL on WebGL
+// (-sLEGACY_GL_EMULATION, cmake/web.cmake). Between glBegin() and glEnd() it takes a vertex's
+// attributes in the order they are called and needs every one for every vertex, where GL keeps a
+// current colour and normal: the calls below keep them and give each vertex both. It has the float
+// forms of these calls only, no separate specular colour (it adds the specular term before
+// texturing, the same here: lit surfaces are not textured), one material for both sides
+// (setMaterial()), and reads client-side indices as 16-bit only (drawTriangleList()).
+namespace {
+struct Immediate {
+    bool inside = false;
+    GLfloat color[4] = {1, 1, 1, 1};
+    GLfloat normal[3] = {0, 0, 1};
+} immediate;
+void webBegin(GLenum mode) { immediate.inside = true, glBegin(mode); }
+void webEnd() { immediate.inside = false, glEnd(); }
+void webColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+    immediate.color[0] = r, immediate.color[1] = g, immediate.color[2] = b, immediate.color[3] = a;
+    if (!immediate.inside) glColor4f(r, g, b, a);
+}
+void webColor3f(GLfloat r, GLfloat g, GLfloat b) { webColor4f(r, g, b, 1); }
+void webNormal3d(GLdouble x, GLdouble y, GLdouble z) {
+    immediate.normal[0] = GLfloat(x), immediate.normal[1] = GLfloat(y), immediate.normal[2] = GLfloat(z);
+}
+void webVertex3d(GLdouble x, GLdouble y, GLdouble z) {
+    glColor4f(immediate.color[0], immediate.color[1], immediate.color[2], immediate.color[3]);
+    glNormal3f(immediate.normal[0], immediate.normal[1], immediate.normal[2]);
+    glVertex3f(GLfloat(x), GLfloat(y), GLfloat(z));
+}
+void webMaterialf(GLenum face, GLenum pname, GLfloat v) { glMaterialfv(face, pname, &v); }
+void webLightModeli(GLenum pname, GLint v) {
+    if (pname == GL_LIGHT_MODEL_TWO_SIDE) glLightModelf(pname, GLfloat(v));
+}
+}  // namespace
+#define glBegin webBegin
+#define glEnd webEnd
+#define glColor4f webColor4f
+#define glColor3f webColor3f
+#define glNormal3d webNormal3d
+#define glVertex3d webVertex3d
+#define glMaterialf webMaterialf
+#define glLightModeli webLightModeli
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +63,9 @@ constexpr double kPi = 3.14159265358979323846;
 const float kBackground[3] = {0.88f, 0.91f, 0.95f};  // the views' background, RGB
 
 void setMaterial(GLenum face, const Eigen::Vector3f& c, float spec, float shininess) {
+#ifdef CLOTHLAB_WEB
+    if (face == GL_BACK) return;  // the emulation has one material for both sides: back faces look like the front
+#endif
     const float amb[4] = {0.35f * c[0], 0.35f * c[1], 0.35f * c[2], 1};
     const float dif[4] = {c[0], c[1], c[2], 1};
     const float sp[4] = {spec, spec, spec, 1};
@@ -129,7 +177,14 @@ void drawTriangleList(const TriangleList& t) {
         glEnableClientState(GL_NORMAL_ARRAY);
         glNormalPointer(GL_FLOAT, 0, t.nrm.data());
     }
+#ifdef CLOTHLAB_WEB
+    // The emulation reads indices from client memory as 16-bit only (up to 65536 vertices: a 256 x 256 cloth).
+    static std::vector<unsigned short> idx16;
+    idx16.assign(t.idx.begin(), t.idx.end());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx16.size()), GL_UNSIGNED_SHORT, idx16.data());
+#else
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(t.idx.size()), GL_UNSIGNED_INT, t.idx.data());
+#endif
     glDisableClientState(GL_NORMAL_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
 }

@@ -1,6 +1,8 @@
 #include "clothlab/sim/team.h"
 
+#ifndef CLOTHLAB_WEB
 #include <omp.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -155,6 +157,9 @@ int teamThreads(int threads) {
         }
         cap = std::min(cap, p.cutAt == Clock::time_point{} ? p.size : p.fallback);
     }
+#ifdef CLOTHLAB_WEB
+    cap = 1;  // the browser build has no threads, whatever solver.threads asks for
+#endif
     return std::max(1, std::min(threads, cap));
 }
 
@@ -169,7 +174,12 @@ TeamCap::~TeamCap() { teamCap = outer_; }
 
 int defaultThreads() {
     const int set = defaultOverride.load();
+#ifdef CLOTHLAB_WEB
+    (void)set;
+    return 1;  // the browser build (cmake/web.cmake) has no threads
+#else
     return set > 0 ? set : std::max(1, omp_get_max_threads());
+#endif
 }
 
 void setDefaultThreads(int threads) { defaultOverride.store(std::max(0, threads)); }
