@@ -65,7 +65,7 @@ function(clothlab_add_sanitize_tests)
     endforeach()
     set(_env "ASAN_OPTIONS=halt_on_error=1:detect_leaks=1" "UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1"
              "OMP_NUM_THREADS=1" "OMP_WAIT_POLICY=passive")
-    add_test(NAME sanitize.cli_bad_input COMMAND bash "${PROJECT_SOURCE_DIR}/tests/framework/cli_test.sh"
+    add_test(NAME sanitize.cli_bad_input COMMAND bash "${PROJECT_SOURCE_DIR}/tests/cli/cli_test.sh"
              $<TARGET_FILE:clothlab-sanitized> "${PROJECT_SOURCE_DIR}")
     add_test(NAME sanitize.fuzz_replay COMMAND scene_fuzz_replay "${PROJECT_SOURCE_DIR}/scenes"
              "${PROJECT_SOURCE_DIR}/tests/fuzz/seeds" "${PROJECT_SOURCE_DIR}/tests/fuzz/regressions")

@@ -1,4 +1,4 @@
-# A points file as the student copy holds it (./lab release; tests/framework/docs_links_check.sh reads
+# A points file as the student copy holds it (./lab release; tests/docs/docs_links_check.sh reads
 # the README's example grade through it): the experiments' numbers are graded by the instructor
 # (tests/instructor/experiments/), so of the Experiments.* tests only AnswerFileIsComplete stays, and
 # "graded_apart" records the points the copy's ./lab grade leaves out (it prints them under its table).

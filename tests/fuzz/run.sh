@@ -38,7 +38,7 @@ case $mode in
       || { tail -40 "$build/check-fuzz.log" >&2; echo "FAIL: fuzzing found an input that breaks the loader (log: $build/check-fuzz.log)" >&2; exit 1; }
     grep -E '^#[0-9]+.*DONE' "$build/check-fuzz.log" || true
     # The command line, sanitized: every scene runs, every bad input is one error line.
-    bash "$root/tests/framework/cli_test.sh" "$build/bin/clothlab" "$root"
+    bash "$root/tests/cli/cli_test.sh" "$build/bin/clothlab" "$root"
     ;;
   fuzz)
     mkdir -p "$build/corpus"

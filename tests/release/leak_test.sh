@@ -98,9 +98,9 @@ search() {
       *) printf '%s\t%s\n' "${f#"$dir"/}" "$f" >>"$list.txt" ;;
     esac
   done < <(find "$dir" -type f -print0 | sort -z)
-  perl -CSD "$root/tests/framework/key_expressions.pl" - "@$list.txt" "$root/tests/instructor/keys/derivations.tsv" \
+  perl -CSD "$root/tests/release/key_expressions.pl" - "@$list.txt" "$root/tests/instructor/keys/derivations.tsv" \
     | sed 's/^/leak: /' || bad=1
-  perl -CSD "$root/tests/framework/key_expressions.pl" - "@$list.md" "$root/tests/instructor/keys/derivations.tsv" \
+  perl -CSD "$root/tests/release/key_expressions.pl" - "@$list.md" "$root/tests/instructor/keys/derivations.tsv" \
     "$root/tests/instructor/keys/derivations_allowed.tsv" | sed 's/^/leak: /' || bad=1
   return $bad
 }

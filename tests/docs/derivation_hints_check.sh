@@ -40,7 +40,7 @@ hint_levels() { jq -r --argjson a "$2" --argjson b "$3" 'to_entries[] | .key as 
 # FILE, after normalising its text to the plain notation of the keys; status 1 if any. With ALLOWFILE
 # (decks, docs): LaTeX and Markdown are written plainly too, and the allowed formulas are cut first.
 gives_away() {
-  perl -CSD "$(dirname "${BASH_SOURCE[0]}")/key_expressions.pl" "$1" "$2" "${3:-$work/keys}" ${4:+"$4"}
+  perl -CSD "$(dirname "${BASH_SOURCE[0]}")/../release/key_expressions.pl" "$1" "$2" "${3:-$work/keys}" ${4:+"$4"}
 }
 
 # unchanged TREE FILE: TREE is a planted copy and FILE is as in the source tree (checked there already).

@@ -1,4 +1,4 @@
-// A submission written to test the submission process (remote_test.cpp): every function of the seven
+// A submission written to test the submission process (submission_process_test.cpp): every function of the seven
 // stages, each doing what a scenario of the test asks for (a computation, a crash, an exception, a
 // forbidden system call, a forged reply, a wrong-sized result, calls of its callbacks).
 #include <fcntl.h>
@@ -148,7 +148,7 @@ PairCorrection layerFriction(const Vec3&, const Vec3&, const Vec3&, const Vec3&,
 }
 
 /// The framework's distance sweep, replaced here too (sim/sweeps.cpp defines it weak): every position
-/// becomes 42 when the sweep arrives whole and runs serially here (remote_test.cpp ASweepCrossesWhole).
+/// becomes 42 when the sweep arrives whole and runs serially here (submission_process_test.cpp ASweepCrossesWhole).
 void projectDistanceSweep(const std::vector<DistanceLink>&, const VectorX&, double, Matrix3X& p, const SweepPlan& plan) {
     p.setConstant(teamThreads(plan.threads) == 1 ? 42.0 : -1.0);
 }

@@ -21,7 +21,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/copy" >"$tmp/release.log" 2>&1 || { cat "$tmp/release.log"; fail "lab release"; }
 grep -q "reference objects" "$tmp/release.log" || fail "lab release does not report the reference objects: $(tail -2 "$tmp/release.log")"
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
-for d in solutions tests/instructor docs/instructor slides tests/framework; do
+for d in solutions tests/instructor docs/instructor slides tests/framework tests/structure tests/docs tests/cli tests/grading tests/release tests/slides; do
   [[ ! -e $tmp/copy/$d ]] || fail "the copy contains $d/ (instructor only)"
 done
 # The experiments' numbers are graded by the instructor: the copy's points files keep only the check
