@@ -54,9 +54,9 @@ int main() {
         return 125;
     }
     const TeamCap serial(1);  // the filter allows no new thread
-    remote::Peer peer(3, 4);
+    wire::Peer peer(3, 4);
 #define CLOTHLAB_SERVE(id, name) \
-    peer.addFunction(id, [](const remote::json& in) { return remote::Invoke<decltype(name)>::serve(name, in); });
+    peer.addFunction(id, [](const wire::json& in) { return wire::Invoke<decltype(name)>::serve(name, in); });
     CLOTHLAB_REMOTE_FUNCTIONS(CLOTHLAB_SERVE)
 #undef CLOTHLAB_SERVE
     try {

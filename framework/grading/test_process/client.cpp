@@ -6,7 +6,7 @@
 
 #include "wire/peer.h"
 
-namespace clothlab::remote {
+namespace clothlab::wire {
 
 /// The submission process's program and what to do when a signal ends it: graded_main.cpp.
 extern const char* serverPath;
@@ -40,4 +40,4 @@ Peer& submissionProcess() {
     return peer;
 }
 
-}  // namespace clothlab::remote
+}  // namespace clothlab::wire

@@ -54,20 +54,20 @@ bool g_channel = false;
 
 }  // namespace
 
-namespace clothlab::remote {
+namespace clothlab::wire {
 /// The submission process's program (client.cpp), from --clothlab-server=PATH.
 const char* serverPath = nullptr;
 /// The submission process ended by `signal`: said on the channel (client.cpp calls it).
 void reportSignal(int signal) {
     if (g_channel) sendLine("signal " + std::to_string(signal));
 }
-}  // namespace clothlab::remote
+}  // namespace clothlab::wire
 
 int main(int argc, char** argv) {
     const std::string server = "--clothlab-server=";
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--clothlab-channel") == 0) g_channel = true;
-        if (server.compare(0, server.size(), argv[i], server.size()) == 0) clothlab::remote::serverPath = argv[i] + server.size();
+        if (server.compare(0, server.size(), argv[i], server.size()) == 0) clothlab::wire::serverPath = argv[i] + server.size();
     }
     ::testing::InitGoogleTest(&argc, argv);
     if (g_channel) {

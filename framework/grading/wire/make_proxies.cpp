@@ -151,8 +151,8 @@ int main(int argc, char** argv) {
                     const Function& f = fs[i];
                     std::string args;
                     for (const auto& x : f.args) args += ", " + x;
-                    out << "\n" << f.returns << " " << f.name << "(" << f.params << ") {\n    return remote::Invoke<decltype(" << f.name
-                        << ")>::call(remote::submissionProcess(), " << first + static_cast<int>(i) << ", \"" << f.name << "\"" << args << ");\n}\n";
+                    out << "\n" << f.returns << " " << f.name << "(" << f.params << ") {\n    return wire::Invoke<decltype(" << f.name
+                        << ")>::call(wire::submissionProcess(), " << first + static_cast<int>(i) << ", \"" << f.name << "\"" << args << ");\n}\n";
                     list << "    X(" << first + static_cast<int>(i) << ", " << f.name << ") \\\n";
                 }
             };

@@ -9,7 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace clothlab::remote {
+namespace clothlab::wire {
 
 namespace {
 
@@ -255,4 +255,4 @@ std::string Peer::disconnect(bool ended) {
     return how;
 }
 
-}  // namespace clothlab::remote
+}  // namespace clothlab::wire

@@ -27,7 +27,7 @@
 #include "clothlab/core/not_implemented.h"
 #include "wire/wire.h"
 
-namespace clothlab::remote {
+namespace clothlab::wire {
 
 /// The submission process ended or broke the protocol: the call cannot finish (never sent back).
 struct PeerFailure : std::runtime_error {
@@ -237,4 +237,4 @@ template <class R, class... P> void callbackOf(uint32_t id, std::function<R(P...
     else f = [peer, id](P... args) -> R { return Invoke<R(P...)>::call(*peer, id, "a callback", std::forward<P>(args)...); };
 }
 
-}  // namespace clothlab::remote
+}  // namespace clothlab::wire

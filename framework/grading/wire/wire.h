@@ -31,7 +31,7 @@
 #include "clothlab/exercise/07_self_collision.h"
 #include "clothlab/sim/sweeps.h"
 
-namespace clothlab::remote {
+namespace clothlab::wire {
 
 using json = nlohmann::json;
 
@@ -68,7 +68,7 @@ private:
     CallContext saved_;
 };
 
-}  // namespace clothlab::remote
+}  // namespace clothlab::wire
 
 /// Declares how struct T crosses the wire: one name per field, in order. The structured binding
 /// does not compile unless the list names every field of T (so none is left out by mistake).
@@ -109,7 +109,7 @@ inline auto wireFields(PbdParticles& P) { return std::tie(P.x, P.v, P.w, P.t, P.
 static_assert(sizeof(PbdParticles) == sizeof(Matrix3X) * 3 + sizeof(VectorX) + sizeof(double), "PbdParticles: a field that does not cross");
 }  // namespace clothlab
 
-namespace clothlab::remote {
+namespace clothlab::wire {
 
 /// A fixed-size or dynamic Eigen matrix.
 template <class T> struct IsMatrix : std::false_type {};
@@ -307,4 +307,4 @@ inline void shapeOf(const json& j, std::vector<long long>& out) {
         for (const auto& e : j) shapeOf(e, out);
 }
 
-}  // namespace clothlab::remote
+}  // namespace clothlab::wire
