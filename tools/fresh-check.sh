@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# The fresh-machine check: `./lab fresh-check bookworm|trixie [--keep] [--only demo|test]`.
+# The fresh-machine check: `./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web] [--web]`.
 #
 # Builds a minimal Debian root with debootstrap (nothing in it but tools/base-packages.txt), clones
 # the *committed* tree (HEAD) into it, and runs the README's two commands there as root, the way a
 # student on a new machine would: `./lab demo`, then `./lab test`. Each command's exit status and
-# wall time is printed as a table and appended to $WORK/results.tsv.
+# wall time is printed as a table and appended to $WORK/results.tsv. With --web (or --only web) the
+# browser path follows: `./lab test --web` (it installs Emscripten and chromium, builds the page with
+# em++ and runs the browser tests), as a student who wants the app in a browser would.
 #
 # The commands run in a chroot whose root is a mount point of its own (bubblewrap, the grader's
 # sandbox, needs that: "Failed to make / slave" otherwise), with /proc, /sys and /dev from the host
@@ -24,19 +26,20 @@ ROOT=${CLOTHLAB_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 die() { printf 'error: %s\n' "$*" >&2; exit 1; }
 say() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
 
-release="" keep=0 only=(demo test) devcontainer=0
+release="" keep=0 only=(demo test) devcontainer=0 web=0
 while (($#)); do
   case $1 in
     --keep) keep=1; shift ;;
     --devcontainer) devcontainer=1; shift ;;
-    --only) [[ ${2:-} == demo || ${2:-} == test ]] || die "fresh-check: --only: demo or test, not '${2:-}'"; only=("$2"); shift 2 ;;
-    -*) die "fresh-check: unknown option $1 (usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test] [--devcontainer])" ;;
+    --only) [[ ${2:-} =~ ^(demo|test|web)$ ]] || die "fresh-check: --only: demo, test or web, not '${2:-}'"; only=("$2"); shift 2 ;;
+    --web) web=1; shift ;;
+    -*) die "fresh-check: unknown option $1 (usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web] [--web] [--devcontainer])" ;;
     *) [[ -z $release ]] || die "fresh-check: one release at a time"; release=$1; shift ;;
   esac
 done
 case $release in
   bookworm|trixie) ;;
-  "") die "fresh-check: usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test] [--devcontainer]" ;;
+  "") die "fresh-check: usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web] [--web] [--devcontainer]" ;;
   *) die "fresh-check: release '$release': bookworm (Debian 12) or trixie (Debian 13)" ;;
 esac
 [[ $(id -u) -eq 0 ]] || die "fresh-check: needs root (debootstrap, chroot and mounts)"
@@ -138,19 +141,21 @@ if ((devcontainer)); then
   say "fresh-check $label: the Dockerfile's steps took $(($(date +%s) - t0)) s"
 fi
 
+((web)) && [[ " ${only[*]} " != *" web "* ]] && only+=(web)
 results=()
 pretty=$(awk -F= '$1 == "PRETTY_NAME" { gsub(/"/, "", $2); print $2 }' "$target/etc/os-release")
 for c in "${only[@]}"; do
   log=$work/${target##*/}.$c.log
-  say "fresh-check $release: ./lab $c (log: $log)"
+  command=$c; [[ $c == web ]] && command="test --web"  # the browser tests (label web)
+  say "fresh-check $release: ./lab $command (log: $log)"
   t0=$(date +%s)
   status=0
-  run_in_root "$log" "./lab $c" || status=$?
+  run_in_root "$log" "./lab $command" || status=$?
   secs=$(($(date +%s) - t0))
   verdict=passed; ((status == 0)) || verdict=failed
   tail_line=$(grep -E 'tests passed|tests failed' "$log" | tail -1 || true)
-  results+=("$label	$pretty	./lab $c	$secs	$status	$verdict	${tail_line:-}")
-  printf '%s\t%s\t./lab %s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%F)" "$label" "$c" "$secs" "$status" "$verdict" "$commit" "${tail_line:-}" >>"$work/results.tsv"
+  results+=("$label	$pretty	./lab $command	$secs	$status	$verdict	${tail_line:-}")
+  printf '%s\t%s\t./lab %s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%F)" "$label" "$command" "$secs" "$status" "$verdict" "$commit" "${tail_line:-}" >>"$work/results.tsv"
   ((status == 0)) || tail -30 "$log" >&2
 done
 
@@ -172,10 +177,10 @@ if ((devcontainer)); then  # the browser desktop answers on port 6080
 fi
 
 echo
-printf '%-10s %-32s %-12s %10s %6s  %s\n' release system command "wall time" exit result
+printf '%-10s %-32s %-16s %10s %6s  %s\n' release system command "wall time" exit result
 for r in "${results[@]}"; do
   IFS=$'\t' read -r rel sys cmd secs st verdict tl <<<"$r"
-  printf '%-10s %-32s %-12s %7dm%02ds %6s  %s %s\n' "$rel" "$sys" "$cmd" $((secs / 60)) $((secs % 60)) "$st" "$verdict" "$tl"
+  printf '%-10s %-32s %-16s %7dm%02ds %6s  %s %s\n' "$rel" "$sys" "$cmd" $((secs / 60)) $((secs % 60)) "$st" "$verdict" "$tl"
 done
 echo "(commit $commit; logs in $work; all runs so far: $work/results.tsv)"
 for r in "${results[@]}"; do [[ $r == *$'\t'passed$'\t'* ]] || exit 1; done
