@@ -71,6 +71,27 @@ reference_lines() {
   cat "$root"/exercises/"$nn"_*/*.cpp | sed 's/^[[:space:]]*//' | sort -u >"$tmp/stub_$nn"
   sed 's/^[[:space:]]*//' "$root"/solutions/"$nn"_*/*.cpp | grep -v '^//' | awk 'length > 25' | sort -u | comm -23 - "$tmp/stub_$nn"
 }
+# `network`: an endpoint on the machine's loopback (tcp 127.0.0.1:47613, socket_connect's target) that
+# greets whoever connects. Inside the sandbox's own network namespace nothing listens there; with the
+# machine's network in view the attack reaches it and says so ("ESCAPED: ... it said: ...").
+listener=""
+if [[ " ${groups[*]} " == *network* ]]; then
+  python3 -c '
+import socket, sys
+s = socket.socket(); s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+try: s.bind(("127.0.0.1", 47613))
+except OSError as e: print(e); sys.exit(1)
+s.listen(16); print("listening", flush=True)
+while True:
+    c, _ = s.accept(); c.settimeout(2)
+    try: c.sendall(b"the red team live test endpoint\n"); c.recv(65536)
+    except OSError: pass
+    c.close()' >"$tmp/listener.log" 2>&1 &
+  listener=$!
+  trap 'kill "$listener" 2>/dev/null; rm -rf "$tmp"' EXIT
+  for _ in $(seq 50); do grep -q listening "$tmp/listener.log" && break; kill -0 "$listener" 2>/dev/null || break; sleep 0.1; done
+  grep -q listening "$tmp/listener.log" || fail "network: cannot listen on 127.0.0.1:47613: $(cat "$tmp/listener.log")"
+fi
 escapes() { ls -d /tmp/clothlab-hostile* /tmp/clothlab-escape* /var/tmp/clothlab-hostile* /var/tmp/clothlab-escape* \
                /dev/shm/clothlab-hostile* /dev/shm/clothlab-escape* 2>/dev/null; }
 escapes >"$tmp/escapes_before"
