@@ -165,6 +165,7 @@ for g in "${groups[@]}"; do
     if ((rc != 0)) && [[ -n $changed && $run != *" "* ]]; then  # it damaged the tree so that the grading stopped
       if [[ -n ${known_dead[$run]:-} ]]; then echo "$run bites now: remove 'dead' from its row in attacks.tsv and from README"; bad=1
       else echo "live: $run ($g): changed the instructor's tree (its copy): $changed; the grading stopped: $(tail -1 "$tmp/grade.log")"; fi
+      escapes | comm -13 "$tmp/escapes_before" - | xargs -r rm -rf
       restore_tree
       continue
     fi
