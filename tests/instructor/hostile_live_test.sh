@@ -11,6 +11,8 @@
 #     that the stub does not have, or
 #   - says it escaped ("ESCAPED: ..." in a failure message), or leaves a file named clothlab-hostile*
 #     or clothlab-escape* in /tmp, /var/tmp or /dev/shm, or
+#   - changes the instructor's tree: the copy of it that these runs grade with (its points, tests,
+#     reference; graded alone, also when the grading then stops), or
 #   - keeps the grading from ending (defence `time`: the run is stopped after $bound s).
 # An attack that does not bite fails this test by name ("DEAD: NAME"): it no longer tests its
 # defence. attacks.tsv's expect `dead` marks the ones known not to bite (README: why); such an attack
@@ -33,10 +35,37 @@ chmod 711 "$tmp"
 fail() { echo "FAIL: $*"; exit 1; }
 [[ -x $grader ]] || fail "no $grader (build clothlab-grade-weakened)"
 
+# The instructor's tree and kit these runs grade with are copies in $tmp: with a defence off an attack
+# may write, delete or kill there, never in SOURCE_DIR. The copy of the tree (what the graded kit
+# names: stubs, reference, public headers, tests, points, the attack snippets) is where the attacks
+# are put together from (@TREE@) and what the kit's points folder and the compile view point into;
+# the kit's objects stay where the build put them (read-only in every view). $tmp/CMakeCache.txt
+# names the copy, as the build's does the tree: it is the first one above the test binaries (in
+# $tmp/out_*) and above the kit, where the attacks that look for the tree find it.
+tree=$tmp/tree
+mkdir -p "$tree/tests" "$tree/framework" "$tmp/build/grade-kit" "$tmp/build/tests"
+cp -r "$root/exercises" "$root/solutions" "$tree/" && cp -r "$root/framework/include" "$tree/framework/" \
+  && cp "$root"/tests/*.* "$tree/tests/" && cp -r "$root/tests/instructor" "$tree/tests/" \
+  && cp -r "$(dirname "$kit")/../tests/generated" "$tmp/build/tests/" || fail "cannot copy the tree and the kit into $tmp"
+jq --arg p "$tree/tests" '.points_dir = $p' "$kit" >"$tmp/build/grade-kit/kit.json" || fail "$kit: not a kit"
+kit=$tmp/build/grade-kit/kit.json
+echo "CMAKE_HOME_DIRECTORY:INTERNAL=$tree" >"$tmp/CMakeCache.txt"
+chmod -R go-w "$tree"  # root's files, as the instructor's are: user nobody may read them, not change them
+# The tree copy's files and their checksums: an attack that changes them bites (then the copy is renewed).
+tree_sums() { (cd "$tree" && find . -type f -print0 | sort -z | xargs -0 cksum); }
+tree_sums >"$tmp/tree_sums"
+restore_tree() {  # the next run starts from the untouched copy
+  [[ $(tree_sums) == "$(cat "$tmp/tree_sums")" ]] && return
+  rm -rf "$tree/tests" && mkdir "$tree/tests" && cp "$root"/tests/*.* "$tree/tests/" && cp -r "$root/tests/instructor" "$tree/tests/"
+  rm -rf "$tree/exercises" "$tree/solutions" "$tree/framework/include" && cp -r "$root/exercises" "$root/solutions" "$tree/" \
+    && cp -r "$root/framework/include" "$tree/framework/" && chmod -R go-w "$tree"
+  [[ $(tree_sums) == "$(cat "$tmp/tree_sums")" ]] || fail "cannot restore the copy of the tree in $tree"
+}
+
 declare -A stage_of=() defence_of=() known_dead=()  # known_dead: attacks.tsv's expect `dead` (README: why)
 groups=()
 assemble() {  # assemble STUDENT SNIPPET-NAME STAGE: the reference with the attacked stage's folder replaced
-  bash "$root/tests/instructor/assemble_attack.sh" "$root" "$2" "$3" "$tmp/attack_$1" || fail "attacks.tsv: $2: cannot put the attack together"
+  bash "$tree/tests/instructor/assemble_attack.sh" "$tree" "$2" "$3" "$tmp/attack_$1" || fail "attacks.tsv: $2: cannot put the attack together"
   local dir; dir=$(cd "$tmp/attack_$1" && ls -d "$3"_*/)
   mkdir -p "$tmp/sub_$1" && cp -r "$root"/solutions/[0-9][0-9]_* "$tmp/sub_$1/"
   rm -rf "${tmp:?}/sub_$1/${dir%/}" && cp -r "$tmp/attack_$1/${dir%/}" "$tmp/sub_$1/"
@@ -71,6 +100,27 @@ reference_lines() {
   cat "$root"/exercises/"$nn"_*/*.cpp | sed 's/^[[:space:]]*//' | sort -u >"$tmp/stub_$nn"
   sed 's/^[[:space:]]*//' "$root"/solutions/"$nn"_*/*.cpp | grep -v '^//' | awk 'length > 25' | sort -u | comm -23 - "$tmp/stub_$nn"
 }
+# `network`: an endpoint on the machine's loopback (tcp 127.0.0.1:47613, socket_connect's target) that
+# greets whoever connects. Inside the sandbox's own network namespace nothing listens there; with the
+# machine's network in view the attack reaches it and says so ("ESCAPED: ... it said: ...").
+listener=""
+if [[ " ${groups[*]} " == *network* ]]; then
+  python3 -c '
+import socket, sys
+s = socket.socket(); s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+try: s.bind(("127.0.0.1", 47613))
+except OSError as e: print(e); sys.exit(1)
+s.listen(16); print("listening", flush=True)
+while True:
+    c, _ = s.accept(); c.settimeout(2)
+    try: c.sendall(b"the red team live test endpoint\n"); c.recv(65536)
+    except OSError: pass
+    c.close()' >"$tmp/listener.log" 2>&1 &
+  listener=$!
+  trap 'kill "$listener" 2>/dev/null; rm -rf "$tmp"' EXIT
+  for _ in $(seq 50); do grep -q listening "$tmp/listener.log" && break; kill -0 "$listener" 2>/dev/null || break; sleep 0.1; done
+  grep -q listening "$tmp/listener.log" || fail "network: cannot listen on 127.0.0.1:47613: $(cat "$tmp/listener.log")"
+fi
 escapes() { ls -d /tmp/clothlab-hostile* /tmp/clothlab-escape* /var/tmp/clothlab-hostile* /var/tmp/clothlab-escape* \
                /dev/shm/clothlab-hostile* /dev/shm/clothlab-escape* 2>/dev/null; }
 escapes >"$tmp/escapes_before"
@@ -111,6 +161,14 @@ for g in "${groups[@]}"; do
       else dead+=("$run ($g): the grading ended (status $rc)"); fi
       continue
     fi
+    changed=$(tree_sums | diff "$tmp/tree_sums" - | sed -n 's/^[<>] [0-9]* [0-9]* \.\///p' | sort -u | head -1)
+    if ((rc != 0)) && [[ -n $changed && $run != *" "* ]]; then  # it damaged the tree so that the grading stopped
+      if [[ -n ${known_dead[$run]:-} ]]; then echo "$run bites now: remove 'dead' from its row in attacks.tsv and from README"; bad=1
+      else echo "live: $run ($g): changed the instructor's tree (its copy): $changed; the grading stopped: $(tail -1 "$tmp/grade.log")"; fi
+      escapes | comm -13 "$tmp/escapes_before" - | xargs -r rm -rf
+      restore_tree
+      continue
+    fi
     ((rc == 0)) || { tail -20 "$tmp/grade.log"; fail "the weakened grading run ($g) failed"; }
     book=$out/gradebook.csv
     IFS=, read -r -a H <"$book"
@@ -131,6 +189,8 @@ for g in "${groups[@]}"; do
         line=$(grep -F -x -f "$tmp/ref_lines" <(sed 's/^[[:space:]]*//' "$tmp/messages") | head -1)
         [[ -n $line ]] && why="its failure message hands out the reference: ${line:0:60}"
       fi
+      # (a change is told only of an attack graded alone: it cannot say which of several made it)
+      if [[ -z $why && -n $changed && $run == "$a" ]]; then why="changed the instructor's tree (its copy): $changed"; fi
       new=$(escapes | comm -13 "$tmp/escapes_before" -)
       if [[ -z $why && -n $new ]]; then why="left $(echo "$new" | head -1)"; fi
       if [[ -n $why && -n ${known_dead[$a]:-} ]]; then
@@ -140,6 +200,7 @@ for g in "${groups[@]}"; do
       else dead+=("$a ($g): 0 points on stage $s, nothing else changed"); fi
     done
     escapes | comm -13 "$tmp/escapes_before" - | xargs -r rm -rf
+    restore_tree
   done
 done
 for s in "${skipped[@]}"; do echo "not switched off here: $s"; done
