@@ -65,6 +65,9 @@ if ((devcontainer)); then
 fi
 commit=$(git -C "$ROOT" rev-parse --short HEAD)
 mkdir -p "$work"
+# One check per root at a time: a second one would remove the first one's root while it runs.
+exec 9>"$target.lock"
+flock -n 9 || die "fresh-check: another fresh-check of $label is running (it holds $target.lock): wait for it to end"
 
 mounts=()
 cleanup() {
