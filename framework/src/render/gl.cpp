@@ -7,10 +7,10 @@
 namespace clothlab::gl {
 
 namespace {
-unsigned compile(GLenum kind, const char* body) {
+unsigned compile(GLenum kind, const char* defines, const char* body) {
     const GLuint s = glCreateShader(kind);
-    const char* parts[2] = {kGlslHeader, body};
-    glShaderSource(s, 2, parts, nullptr);
+    const char* parts[3] = {kGlslHeader, defines, body};
+    glShaderSource(s, 3, parts, nullptr);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -25,8 +25,9 @@ unsigned compile(GLenum kind, const char* body) {
 }
 }  // namespace
 
-unsigned program(const char* vertex, const char* fragment, const char* const* attributes, int n_attributes) {
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
+unsigned program(const char* vertex, const char* fragment, const char* const* attributes, int n_attributes,
+                 const char* defines) {
+    const GLuint vs = compile(GL_VERTEX_SHADER, defines, vertex), fs = compile(GL_FRAGMENT_SHADER, defines, fragment);
     const GLuint p = glCreateProgram();
     glAttachShader(p, vs);
     glAttachShader(p, fs);

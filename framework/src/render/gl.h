@@ -24,10 +24,12 @@ inline constexpr const char* kGlslHeader = "#version 330 core\n";
 inline constexpr const char* kGlslHeader = "#version 300 es\nprecision highp float;\n";
 #endif
 
-/// Compiles and links a program from a vertex and a fragment shader's bodies (kGlslHeader is put in
-/// front), with the vertex attributes bound to the locations given by `attributes` (its index).
+/// Compiles and links a program from a vertex and a fragment shader's bodies (kGlslHeader, then
+/// `defines`, put in front of each), with the vertex attributes bound to the locations given by
+/// `attributes` (its index).
 /// @throws std::runtime_error with the compiler's log when a shader does not compile or link
-unsigned program(const char* vertex, const char* fragment, const char* const* attributes, int n_attributes);
+unsigned program(const char* vertex, const char* fragment, const char* const* attributes, int n_attributes,
+                 const char* defines = "");
 
 /// A growing buffer object: the first upload of a size allocates it (glBufferData, a little larger),
 /// later ones of up to that size only replace its contents (glBufferSubData).

@@ -23,11 +23,12 @@ const float kBackground[3] = {0.88f, 0.91f, 0.95f};  // the views' background, R
 enum Attribute { kPosition = 0, kNormal = 1, kColor = 2, kUv = 3 };
 const char* const kAttributes[] = {"aPosition", "aNormal", "aColor", "aUv"};
 
-// One program draws everything: unlit (the vertex's colour, or one colour for the whole draw: the
-// attribute's constant value) or lit per pixel like the former fixed-function lighting: two
-// directional lights that follow the camera (a warm key light with a specular highlight, a cool fill
-// light), a global ambient term, two-sided with a material per side, the checker texture modulating
-// the diffuse part and the specular term added after it. Points are round (uRound).
+// One shader source, compiled twice: with LIT (lit per pixel like the former fixed-function lighting:
+// two directional lights that follow the camera, a warm key light with a specular highlight and a
+// cool fill light, a global ambient term, two-sided with a material per side, the checker texture
+// modulating the diffuse part and the specular term added after it) and without (unlit: the vertex's
+// colour, or one colour for the whole draw, the attribute's constant value; points round with
+// uRound). Two programs, not one with a branch: llvmpipe would run the lighting for every line too.
 const char* const kVertexShader = R"(
 in vec3 aPosition;
 in vec3 aNormal;
@@ -51,21 +52,18 @@ const char* const kFragmentShader = R"(
 in vec3 vNormal;
 in vec4 vColor;
 in vec2 vUv;
-uniform bool uLit;
+out vec4 fragColor;
+#ifdef LIT
 uniform bool uTextured;
-uniform bool uRound;
 uniform vec3 uFront;      // diffuse colour of front faces (ambient: 0.35 of it)
 uniform vec3 uBack;       // of back faces
 uniform vec2 uSpecular;   // specular reflectance, front and back
 uniform float uShininess;
 uniform sampler2D uTexture;
-out vec4 fragColor;
+const vec3 kKey = vec3(-0.28625, 0.61340, 0.73607);  // normalize(-0.35, 0.75, 0.9), eye space
+const vec3 kFill = vec3(0.76200, -0.12700, 0.63500);  // normalize(0.6, -0.1, 0.5)
+const vec3 kHalf = vec3(-0.15362, 0.32919, 0.93169);  // normalize(kKey + (0, 0, 1)): the viewer at infinity
 void main() {
-    if (uRound && length(gl_PointCoord - vec2(0.5)) > 0.5) discard;
-    if (!uLit) {
-        fragColor = vColor;
-        return;
-    }
     vec3 n = normalize(vNormal), m = uFront;
     float s = uSpecular.x;
     if (!gl_FrontFacing) {
@@ -73,14 +71,20 @@ void main() {
         m = uBack;
         s = uSpecular.y;
     }
-    vec3 key = normalize(vec3(-0.35, 0.75, 0.9)), fill = normalize(vec3(0.6, -0.1, 0.5));
-    float kd = max(dot(n, key), 0.0);
-    vec3 c = m * (0.35 * vec3(0.25, 0.25, 0.27) + kd * vec3(0.80, 0.80, 0.78) + max(dot(n, fill), 0.0) * vec3(0.30, 0.32, 0.36));
+    float kd = max(dot(n, kKey), 0.0);
+    vec3 c = m * (0.35 * vec3(0.25, 0.25, 0.27) + kd * vec3(0.80, 0.80, 0.78) + max(dot(n, kFill), 0.0) * vec3(0.30, 0.32, 0.36));
     c = min(c, vec3(1.0));
     if (uTextured) c *= texture(uTexture, vUv).rgb;
-    float h = max(dot(n, normalize(key + vec3(0.0, 0.0, 1.0))), 0.0);
+    float h = max(dot(n, kHalf), 0.0);
     fragColor = vec4(min(c + (kd > 0.0 ? 0.5 * s * pow(h, uShininess) : 0.0), vec3(1.0)), 1.0);
 }
+#else
+uniform bool uRound;
+void main() {
+    if (uRound && length(gl_PointCoord - vec2(0.5)) > 0.5) discard;
+    fragColor = vColor;
+}
+#endif
 )";
 
 // Triangles with optional per-vertex normals, indexed.
@@ -199,9 +203,21 @@ void push(std::vector<float>& v, double x, double y, double z) { push(v, Vec3(x,
 
 // The renderer's GL objects (made in the context current at the first draw) and per-frame scratch.
 struct Renderer::Gpu {
-    GLuint program = 0;
-    GLint uProjection = -1, uModelView = -1, uPointSize = -1, uLit = -1, uTextured = -1, uRound = -1;
-    GLint uFront = -1, uBack = -1, uSpecular = -1, uShininess = -1, uTexture = -1;
+    // One of the two programs and its uniforms' locations (-1: not in this one).
+    struct Program {
+        GLuint id = 0;
+        GLint uProjection = -1, uModelView = -1, uPointSize = -1, uRound = -1, uTextured = -1;
+        GLint uFront = -1, uBack = -1, uSpecular = -1, uShininess = -1, uTexture = -1;
+        void make(const char* defines) {
+            id = gl::program(kVertexShader, kFragmentShader, kAttributes, 4, defines);
+            const auto u = [this](const char* name) { return glGetUniformLocation(id, name); };
+            uProjection = u("uProjection"), uModelView = u("uModelView"), uPointSize = u("uPointSize");
+            uRound = u("uRound"), uTextured = u("uTextured"), uFront = u("uFront"), uBack = u("uBack");
+            uSpecular = u("uSpecular"), uShininess = u("uShininess"), uTexture = u("uTexture");
+        }
+    };
+    Program shaded, flat;              // lit (LIT) and unlit
+    Program* current = nullptr;        // the one in use
     GLuint texture = 0;  // checker texture of the cloth (0: not created yet)
     std::map<std::pair<int, int>, Mesh> spheres;  // unit spheres by (slices, stacks), uploaded once
     Mesh cloth, ground, grid, shadow, colliders, edges, points, rings, planes;
@@ -211,25 +227,38 @@ struct Renderer::Gpu {
     std::vector<unsigned> clothIdx;  // the cloth's indices as uploaded (uploaded again when they change)
 
     void make() {
-        program = gl::program(kVertexShader, kFragmentShader, kAttributes, 4);
-        const auto u = [this](const char* name) { return glGetUniformLocation(program, name); };
-        uProjection = u("uProjection"), uModelView = u("uModelView"), uPointSize = u("uPointSize");
-        uLit = u("uLit"), uTextured = u("uTextured"), uRound = u("uRound"), uFront = u("uFront");
-        uBack = u("uBack"), uSpecular = u("uSpecular"), uShininess = u("uShininess"), uTexture = u("uTexture");
+        shaded.make("#define LIT\n");
+        flat.make("");
     }
-    void modelView(const Eigen::Matrix4f& mv) { glUniformMatrix4fv(uModelView, 1, GL_FALSE, mv.data()); }
+    void use(Program& p) {
+        if (current != &p) glUseProgram(p.id), current = &p;
+    }
+    // Both programs: this frame's projection and view, no texture, unit-sized square points.
+    void begin(const Eigen::Matrix4f& projection) {
+        for (Program* p : {&shaded, &flat}) {
+            glUseProgram(p->id);
+            glUniformMatrix4fv(p->uProjection, 1, GL_FALSE, projection.data());
+            glUniformMatrix4fv(p->uModelView, 1, GL_FALSE, view.data());
+            glUniform1i(p->uTextured, 0);
+            glUniform1i(p->uTexture, 0);
+            glUniform1i(p->uRound, 0);
+            glUniform1f(p->uPointSize, 1.0f);
+        }
+        current = &flat;
+    }
+    void modelView(const Eigen::Matrix4f& mv) { glUniformMatrix4fv(current->uModelView, 1, GL_FALSE, mv.data()); }
     // Unlit, in one colour (the colour attribute's constant value; a mesh with colours ignores it).
     void unlit(float r, float g, float b, float a = 1) {
-        glUniform1i(uLit, 0);
+        use(flat);
         glVertexAttrib4f(kColor, r, g, b, a);
     }
     // Lit, with a material per side: diffuse colour (ambient 0.35 of it), specular reflectance, shininess.
     void lit(const Eigen::Vector3f& front, const Eigen::Vector3f& back, float spec_front, float spec_back, float shininess) {
-        glUniform1i(uLit, 1);
-        glUniform3f(uFront, front[0], front[1], front[2]);
-        glUniform3f(uBack, back[0], back[1], back[2]);
-        glUniform2f(uSpecular, spec_front, spec_back);
-        glUniform1f(uShininess, shininess);
+        use(shaded);
+        glUniform3f(shaded.uFront, front[0], front[1], front[2]);
+        glUniform3f(shaded.uBack, back[0], back[1], back[2]);
+        glUniform2f(shaded.uSpecular, spec_front, spec_back);
+        glUniform1f(shaded.uShininess, shininess);
     }
     void lit(const Eigen::Vector3f& c, float spec, float shininess) { lit(c, c, spec, spec, shininess); }
     // A lit sphere at centre c with radius r (the current material), a unit sphere scaled.
@@ -329,14 +358,7 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
 #endif
     const Eigen::Matrix4d P = cam.projection(double(width) / height), V = cam.view();
     g.view = toFloat(V);
-    glUseProgram(g.program);
-    const Eigen::Matrix4f Pf = toFloat(P);
-    glUniformMatrix4fv(g.uProjection, 1, GL_FALSE, Pf.data());
-    g.modelView(g.view);
-    glUniform1i(g.uTextured, 0);
-    glUniform1i(g.uRound, 0);
-    glUniform1f(g.uPointSize, 1.0f);
-    glUniform1i(g.uTexture, 0);
+    g.begin(toFloat(P));
 
     right_ = V.block<1, 3>(0, 0).transpose();
     up_ = V.block<1, 3>(1, 0).transpose();
@@ -421,6 +443,10 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     }
 
     lap("shadow");
+    // The cloth before the colliders: the parts of a sphere or table it covers then fail the depth test
+    // before their lighting is computed (llvmpipe tests depth first for a shader without discard).
+    if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
+    lap("cloth");
     // Colliders.
     if (opt.colliders) {
         for (const Collider& c : d.colliders) {
@@ -446,8 +472,6 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     }
 
     lap("colliders");
-    if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
-    lap("cloth");
     if (opt.edges || d.triangles.empty()) drawEdges(d, opt, scale);
     lap("edges");
     drawParticles(d, opt, scale);
@@ -552,13 +576,13 @@ void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
         for (int i = 0; i < n; ++i) g.uv[2 * i] = static_cast<float>(d.uv(0, i)), g.uv[2 * i + 1] = static_cast<float>(d.uv(1, i));
     }
     g.cloth.set(kUv, g.uv, 2);  // none: the array is off
-    glUniform1i(g.uTextured, textured);
     // Two-sided lighting: warm front, cool back.
     g.lit({0.95f, 0.52f, 0.22f}, {0.30f, 0.52f, 0.85f}, 0.25f, 0.15f, 24);
+    glUniform1i(g.shaded.uTextured, textured);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1, 1);
     g.cloth.drawElements();
-    glUniform1i(g.uTextured, 0);
+    glUniform1i(g.shaded.uTextured, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
@@ -650,11 +674,11 @@ void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double
             for (int k = 0; k < 3; ++k) g.xyz[3 * i + k] = static_cast<float>(d.x(k, i));
         g.points.set(kPosition, g.xyz, 3);
         g.unlit(0.20f, 0.20f, 0.25f);
-        glUniform1f(g.uPointSize, n > 2000 ? 2.0f : 3.5f);
-        glUniform1i(g.uRound, 1);
+        glUniform1f(g.flat.uPointSize, n > 2000 ? 2.0f : 3.5f);
+        glUniform1i(g.flat.uRound, 1);
         g.points.drawArrays(GL_POINTS, 0, n);
-        glUniform1i(g.uRound, 0);
-        glUniform1f(g.uPointSize, 1.0f);
+        glUniform1i(g.flat.uRound, 0);
+        glUniform1f(g.flat.uPointSize, 1.0f);
         glDisable(GL_BLEND);
     }
     if (opt.pinned && d.w.size() == n) {

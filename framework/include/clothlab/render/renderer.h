@@ -46,7 +46,7 @@ struct Viewport {
 
 /// Wall time of one pass of Renderer::draw(), summed over the frames since Renderer::resetTimes().
 struct RenderPassTime {
-    const char* name;   ///< "background", "ground and grid", "shadow", "colliders", "cloth", "edges", "particles and planes"
+    const char* name;   ///< "background", "ground and grid", "shadow", "cloth", "colliders", "edges", "particles and planes" (in this order)
     double ms = 0.0;    ///< wall time, milliseconds, summed
     double cpu_ms = 0.0;  ///< CPU time of every thread (the GL's too) by the clock given to setTiming(), ms, summed
 };
@@ -65,7 +65,7 @@ public:
     Renderer& operator=(Renderer&&) noexcept;
 
     /// Renders one frame into the current context's viewport of size width x height:
-    /// background, ground grid and the cloth's shadow, colliders, cloth surface, edges, particles. Ends
+    /// background, ground grid and the cloth's shadow, cloth surface, colliders, edges, particles. Ends
     /// with glFlush(), not glFinish(): the GL may still be drawing when it returns (reading the pixels
     /// waits for it), so the caller can step the simulation meanwhile (llvmpipe draws on its own threads).
     /// @param d              what to draw
