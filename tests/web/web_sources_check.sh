@@ -5,7 +5,7 @@
 #      backend, the renderer's ImGui backend (render/imgui_gl.h) and GLFW (g++ -fsyntax-only; emscripten.h stood in for by the few declarations it uses);
 #   2. every framework source with a CLOTHLAB_WEB branch, and every GL source of the renderer (those that
 #      include its switch, framework/src/render/gl.h), compiles with the switch on (-DCLOTHLAB_WEB=1:
-#      OpenGL ES 3.0's GLES3/gl3.h, from libgles-dev, which libegl-dev pulls in);
+#      OpenGL ES 3.0's GLES3/gl3.h, from libgles-dev: ./lab setup --test);
 #   3. each element web_main.cpp writes (getElementById) is in web/index.html.
 # Each check is shown to fail on a planted case in a temp copy (a renamed App member, a removed id).
 #   web_sources_check.sh SOURCE_DIR TMP
