@@ -2,10 +2,11 @@
 # compiled with Emscripten's em++ (Debian's emscripten) into index.html + clothlab.js/.wasm/.data.
 #   emcmake cmake -S . -B build/web -DCLOTHLAB_IMGUI_SOURCE=DIR     (DIR: Debian's imgui source package,
 #                                                                    fetched by ./lab web with apt-get source)
-# The one build switch of the web build is CLOTHLAB_WEB (set here): the renderer's fixed-function GL
-# (framework/src/render) runs through Emscripten's GL emulation (-sLEGACY_GL_EMULATION) on WebGL2, and
-# Dear ImGui draws with its OpenGL3 backend in GLSL ES 3.00; the simulation runs on one thread
-# (sim/team.cpp: a page without cross-origin isolation has no shared memory for threads).
+# The one build switch of the web build is CLOTHLAB_WEB (set here): the renderer (framework/src/render,
+# shaders and buffer objects, Dear ImGui's drawing included: render/imgui_gl.h) is the desktop's source
+# compiled for WebGL2 = OpenGL ES 3.0, its shaders in GLSL ES 3.00 (the switch's one place:
+# framework/src/render/gl.h), no GL emulation; the simulation runs on one thread (sim/team.cpp: a page
+# without cross-origin isolation has no shared memory for threads).
 # Header-only Debian packages (Eigen, nlohmann-json, stb, tinyobjloader) are used from /usr/include
 # through links in the build folder: /usr/include itself holds the host's C library, not Emscripten's.
 set(CLOTHLAB_WEB ON)
@@ -38,7 +39,7 @@ file(GLOB _web_src CONFIGURE_DEPENDS framework/src/core/*.cpp framework/src/io/*
 list(FILTER _web_src EXCLUDE REGEX "src/render/(offscreen_[a-z]+|video)\\.cpp$")
 set(_im "${CLOTHLAB_IMGUI_SOURCE}")
 add_library(clothlab_web_imgui STATIC ${_im}/imgui.cpp ${_im}/imgui_draw.cpp ${_im}/imgui_tables.cpp
-            ${_im}/imgui_widgets.cpp ${_im}/backends/imgui_impl_glfw.cpp ${_im}/backends/imgui_impl_opengl3.cpp)
+            ${_im}/imgui_widgets.cpp ${_im}/backends/imgui_impl_glfw.cpp)
 target_include_directories(clothlab_web_imgui PUBLIC "${_im}" PRIVATE "${_host}")
 target_compile_options(clothlab_web_imgui PRIVATE -w)
 add_executable(clothlab-web framework/app/web_main.cpp ${_web_src}
@@ -53,7 +54,7 @@ if(EXISTS "${_font}")
   list(APPEND _preload "SHELL:--preload-file ${_font}@${_font}")
 endif()
 target_link_options(clothlab-web PRIVATE -fexceptions -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
-  -sLEGACY_GL_EMULATION=1 -sALLOW_MEMORY_GROWTH=1 ${_preload})
+  -sALLOW_MEMORY_GROWTH=1 ${_preload})
 set_target_properties(clothlab-web PROPERTIES OUTPUT_NAME clothlab SUFFIX .js)
 # The page (a change re-runs the configure step, which copies it again).
 configure_file(web/index.html "${CMAKE_BINARY_DIR}/bin/index.html" COPYONLY)

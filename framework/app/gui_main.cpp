@@ -4,7 +4,6 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl2.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -13,6 +12,7 @@
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/gui/app.h"
+#include "clothlab/render/imgui_gl.h"
 #include "clothlab/render/renderer.h"
 
 #ifndef CLOTHLAB_SCENES_DIR
@@ -48,9 +48,13 @@ int main(int argc, char** argv) {
         std::cerr << "error: display: GLFW cannot start (no DISPLAY?); offscreen: ./lab gui SCENE --screenshot FILE.png\n";
         return 1;
     }
+    // OpenGL 3.3 core profile, what the renderer and its ImGui backend are written for (render/imgui_gl.h).
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     GLFWwindow* win = glfwCreateWindow(W, H, "clothlab", nullptr, nullptr);
     if (!win) {
-        std::cerr << "error: display: GLFW cannot open an OpenGL window; offscreen: ./lab gui SCENE --screenshot FILE.png\n";
+        std::cerr << "error: display: GLFW cannot open an OpenGL 3.3 core window; offscreen: ./lab gui SCENE --screenshot FILE.png\n";
         glfwTerminate();
         return 1;
     }
@@ -59,7 +63,7 @@ int main(int argc, char** argv) {
     ImGui::CreateContext();
     setupImGuiStyle();
     ImGui_ImplGlfw_InitForOpenGL(win, true);
-    ImGui_ImplOpenGL2_Init();
+    imguiGlInit();
 
     int code = 0;
     try {
@@ -76,13 +80,13 @@ int main(int argc, char** argv) {
         while (!glfwWindowShouldClose(win) && (frames == 0 || frame < frames)) {
             if (frame == 3) t0 = std::chrono::steady_clock::now();
             glfwPollEvents();
-            ImGui_ImplOpenGL2_NewFrame();
+            imguiGlNewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             glfwGetFramebufferSize(win, &fw, &fh);
             app.frame(fw, fh);
             ImGui::Render();
-            ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+            imguiGlRender(ImGui::GetDrawData());
             if (!screenshot.empty() && frame + 1 == frames) {
                 glReadBuffer(GL_BACK);
                 writePng(screenshot, readPixels(fw, fh));
@@ -99,7 +103,7 @@ int main(int argc, char** argv) {
         std::cerr << "error: " << e.what() << "\n";
         code = 1;
     }
-    ImGui_ImplOpenGL2_Shutdown();
+    imguiGlShutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     glfwDestroyWindow(win);

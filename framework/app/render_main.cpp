@@ -8,7 +8,6 @@
 // Each run prints one line "renderer: OSMesa (llvmpipe)" or "renderer: EGL surfaceless (llvmpipe)";
 // when no context can be made: one line "error: renderer: ..." and exit code 4.
 #include <imgui.h>
-#include <backends/imgui_impl_opengl2.h>
 
 #include <GL/gl.h>
 #include <sys/resource.h>
@@ -31,6 +30,7 @@
 #include "clothlab/io/scene_json.h"
 #include "clothlab/render/offscreen.h"
 #include "clothlab/render/overlay.h"
+#include "clothlab/render/imgui_gl.h"
 #include "clothlab/render/renderer.h"
 #include "clothlab/render/video.h"
 #include "clothlab/sim/run.h"
@@ -61,20 +61,20 @@ struct OffscreenImGui {
         ImGui::CreateContext();
         setupImGuiStyle();
         ImGui::GetIO().DisplaySize = ImVec2(float(w), float(h));
-        ImGui_ImplOpenGL2_Init();
+        imguiGlInit();
     }
     ~OffscreenImGui() {
-        ImGui_ImplOpenGL2_Shutdown();
+        imguiGlShutdown();
         ImGui::DestroyContext();
     }
     void begin(double dt) {
         ImGui::GetIO().DeltaTime = static_cast<float>(dt);
-        ImGui_ImplOpenGL2_NewFrame();
+        imguiGlNewFrame();
         ImGui::NewFrame();
     }
     void end() {
         ImGui::Render();
-        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        imguiGlRender(ImGui::GetDrawData());
     }
 };
 

@@ -1,6 +1,6 @@
 // clothlab in a browser: the same App as clothlab-gui (framework/src/gui), compiled with em++ (./lab web,
-// cmake/web.cmake), in a GLFW canvas (Emscripten's GLFW on WebGL). The renderer's fixed-function GL runs
-// through Emscripten's GL emulation (the build switch CLOTHLAB_WEB, cmake/web.cmake).
+// cmake/web.cmake), in a GLFW canvas (Emscripten's GLFW on WebGL2). The renderer and its ImGui backend
+// are the desktop's source, their shaders in GLSL ES 3.00 (the build switch CLOTHLAB_WEB, render/gl.h).
 //   index.html?scene=NAME          opens scenes/NAME.json (default: pbd_sphere)
 //   index.html?scene=NAME&steps=N  runs exactly N steps, then pauses (the browser test, tests/web/)
 //   &set=KEY=VALUE (repeatable)    overrides a scene field, as ./lab gui --set
@@ -11,7 +11,6 @@
 #include <emscripten.h>
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +25,7 @@
 
 #include "clothlab/core/input_error.h"
 #include "clothlab/gui/app.h"
+#include "clothlab/render/imgui_gl.h"
 
 namespace {
 
@@ -122,7 +122,7 @@ void frame() {
     web.last = now;
     web.ms_per_frame = web.frames < 2 ? ms : 0.9 * web.ms_per_frame + 0.1 * ms;
     glfwPollEvents();
-    ImGui_ImplOpenGL3_NewFrame();
+    imguiGlNewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     int w = 0, h = 0;
@@ -142,7 +142,7 @@ void frame() {
         ImGui::End();
     }
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    imguiGlRender(ImGui::GetDrawData());
     ++web.frames;
     publishStatus();
 }
@@ -153,6 +153,7 @@ int main(int argc, char** argv) {
     const std::string query = argc > 1 ? argv[1] : "";
     if (!glfwInit()) return 1;
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);  // WebGL2 (OpenGL ES 3.0): what the renderer is written for
     const int W = EM_ASM_INT({ return window.innerWidth; }), H = EM_ASM_INT({ return window.innerHeight; });
     web.win = glfwCreateWindow(W > 64 ? W : 1280, H > 64 ? H : 800, "clothlab", nullptr, nullptr);
     if (!web.win) return 1;
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
     ImGui::CreateContext();
     setupImGuiStyle();
     ImGui_ImplGlfw_InitForOpenGL(web.win, true);
-    ImGui_ImplOpenGL3_Init("#version 300 es");
+    imguiGlInit();
 
     web.scene = urlParameter(query, "scene");
     if (web.scene.empty()) web.scene = "pbd_sphere";

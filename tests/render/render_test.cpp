@@ -17,7 +17,6 @@
 #include <nlohmann/json.hpp>
 
 #include <imgui.h>
-#include <backends/imgui_impl_opengl2.h>
 
 #include "clothlab/core/grid.h"
 #include "clothlab/core/not_implemented.h"
@@ -26,6 +25,7 @@
 #include "clothlab/render/camera.h"
 #include "clothlab/render/draw_data.h"
 #include "clothlab/render/offscreen.h"
+#include "clothlab/render/imgui_gl.h"
 #include "clothlab/render/renderer.h"
 
 using namespace clothlab;
@@ -255,17 +255,17 @@ TEST(Image, PngRoundTrip) {
     EXPECT_TRUE(back.width == 3 && back.height == 2 && back.rgba == img.rgba);
 }
 
-// An offscreen context (OSMesa or EGL) with ImGui and its OpenGL2 backend, torn down at the end of the scope.
+// An offscreen context (OSMesa or EGL) with ImGui and its backend (render/imgui_gl.h), torn down at the end of the scope.
 struct OffscreenImGui {
     OffscreenContext ctx;
     OffscreenImGui(int w, int h) : ctx(w, h) {
         ImGui::CreateContext();
         setupImGuiStyle();
         ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
-        ImGui_ImplOpenGL2_Init();
+        imguiGlInit();
     }
     ~OffscreenImGui() {
-        ImGui_ImplOpenGL2_Shutdown();
+        imguiGlShutdown();
         ImGui::DestroyContext();
     }
 };
@@ -284,11 +284,11 @@ TEST(App, DragAndPinAParticleWithTheMouse) {
         io.MouseDown[0] = left;
         io.MouseDown[1] = right;
         io.DeltaTime = 1.0f / 60;
-        ImGui_ImplOpenGL2_NewFrame();
+        imguiGlNewFrame();
         ImGui::NewFrame();
         app.frame(w, h);
         ImGui::Render();
-        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        imguiGlRender(ImGui::GetDrawData());
     };
     frame(Vec3(w - 5, h - 5, 0), false, false);
     frame(Vec3(w - 5, h - 5, 0), false, false);
@@ -336,11 +336,11 @@ TEST(App, EveryMethodRunsOrExplainsItself) {
         App app(o);
         for (int k = 0; k < 3; ++k) {
             io.DeltaTime = 1.0f / 60;
-            ImGui_ImplOpenGL2_NewFrame();
+            imguiGlNewFrame();
             ImGui::NewFrame();
             EXPECT_NO_THROW(app.frame(w, h)) << method;
             ImGui::Render();
-            ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+            imguiGlRender(ImGui::GetDrawData());
         }
         EXPECT_TRUE(app.simulation() != nullptr || !app.message().empty())
             << method << ": neither a simulation nor a message in the panel";
@@ -381,11 +381,11 @@ TEST(App, StubShowsNotImplementedInsteadOfCrashing) {
     App app(o);
     for (int k = 0; k < 3; ++k) {
         io.DeltaTime = 1.0f / 60;
-        ImGui_ImplOpenGL2_NewFrame();
+        imguiGlNewFrame();
         ImGui::NewFrame();
         EXPECT_NO_THROW(app.frame(w, h));
         ImGui::Render();
-        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        imguiGlRender(ImGui::GetDrawData());
     }
     EXPECT_EQ(app.message(), "not implemented: exercise 1.4 symplecticEulerStep")
         << "the panel should name the unfinished task";
@@ -396,11 +396,11 @@ TEST(App, StubShowsNotImplementedInsteadOfCrashing) {
 // One frame of the app offscreen: NewFrame, App::frame, Render (the draw data clippedText() reads).
 static void appFrame(App& app, int w, int h) {
     ImGui::GetIO().DeltaTime = 1.0f / 60;
-    ImGui_ImplOpenGL2_NewFrame();
+    imguiGlNewFrame();
     ImGui::NewFrame();
     app.frame(w, h);
     ImGui::Render();
-    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+    imguiGlRender(ImGui::GetDrawData());
 }
 
 // Side by side: the runs advance together (the same simulated time within one step), each has its
@@ -462,7 +462,7 @@ TEST(App, NoTextCutOffInThePanelOrThePlots) {
         // Planted: a line too long for a 150-pixel window of its own (shown from its second frame on).
         for (int k = 0; k < 2; ++k) {
             ImGui::GetIO().DeltaTime = 1.0f / 60;
-            ImGui_ImplOpenGL2_NewFrame();
+            imguiGlNewFrame();
             ImGui::NewFrame();
             ImGui::SetNextWindowSize(ImVec2(150, 80));
             ImGui::Begin("planted");
@@ -470,7 +470,7 @@ TEST(App, NoTextCutOffInThePanelOrThePlots) {
             ImGui::TextWrapped("a wrapped line is never cut off, however long it is");
             ImGui::End();
             ImGui::Render();
-            ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+            imguiGlRender(ImGui::GetDrawData());
         }
         EXPECT_EQ(clippedText("planted").size(), 1u) << "planted: the unwrapped line should be seen cut off, the wrapped one not";
     }

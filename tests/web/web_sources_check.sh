@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # The fast part of the browser build's tests (./lab test; no Emscripten needed): what breaks the web build
 # while the native build still builds.
-#   1. the browser's main (framework/app/web_main.cpp) compiles against today's App, ImGui's GLFW and
-#      OpenGL3 backends and GLFW (g++ -fsyntax-only; emscripten.h stood in for by the few declarations it uses);
-#   2. every framework source with a CLOTHLAB_WEB branch compiles with the switch on (-DCLOTHLAB_WEB=1);
+#   1. the browser's main (framework/app/web_main.cpp) compiles against today's App, ImGui's GLFW
+#      backend, the renderer's ImGui backend (render/imgui_gl.h) and GLFW (g++ -fsyntax-only; emscripten.h stood in for by the few declarations it uses);
+#   2. every framework source with a CLOTHLAB_WEB branch, and every GL source of the renderer (those that
+#      include its switch, framework/src/render/gl.h), compiles with the switch on (-DCLOTHLAB_WEB=1:
+#      OpenGL ES 3.0's GLES3/gl3.h, from libgles-dev: ./lab setup --test);
 #   3. each element web_main.cpp writes (getElementById) is in web/index.html.
 # Each check is shown to fail on a planted case in a temp copy (a renamed App member, a removed id).
 #   web_sources_check.sh SOURCE_DIR TMP
-# Not covered here (ctest -L web, ./lab test --web): em++ itself, Emscripten's GL emulation of the
-# renderer's calls, the page running in a browser.
+# Not covered here (ctest -L web, ./lab test --web): em++ itself, the shaders compiled by WebGL2, the
+# page running in a browser.
 set -uo pipefail
 src=$1 tmp=$2
 rm -rf "$tmp" && mkdir -p "$tmp/stub"
@@ -28,7 +30,7 @@ check() {  # check ROOT [main]: 0 when every check holds in the tree ROOT (main:
     || { echo "web_main.cpp does not compile: $(grep -m1 error "$tmp/err.txt")"; ok=1; }
   while IFS= read -r f; do
     g++ "${flags[@]}" "$f" 2>"$tmp/err.txt" || { echo "$f does not compile with CLOTHLAB_WEB: $(grep -m1 error "$tmp/err.txt")"; ok=1; }
-  done < <([[ ${2:-} == main ]] || grep -rl --include='*.cpp' 'CLOTHLAB_WEB' "$root/framework/src")
+  done < <([[ ${2:-} == main ]] || grep -rlE --include='*.cpp' 'CLOTHLAB_WEB|#include "gl\.h"' "$root/framework/src")
   for id in $(grep -o "getElementById('[a-z-]*')" "$root/framework/app/web_main.cpp" | sed "s/.*('\(.*\)')/\1/" | sort -u); do
     grep -q "id=\"$id\"" "$root/web/index.html" || { echo "web/index.html has no element id=\"$id\" (web_main.cpp writes it)"; ok=1; }
   done
@@ -37,7 +39,7 @@ check() {  # check ROOT [main]: 0 when every check holds in the tree ROOT (main:
 
 rc=0
 check "$src" || rc=1
-((rc == 0)) && echo "ok: web_main.cpp and the CLOTHLAB_WEB sources compile, index.html has every element the app writes"
+((rc == 0)) && echo "ok: web_main.cpp, the CLOTHLAB_WEB sources and the renderer's GL sources compile, index.html has every element the app writes"
 
 # Planted: each check catches its case.
 plant() {  # plant NAME SED_FILE SED_EXPR EXPECTED_TEXT

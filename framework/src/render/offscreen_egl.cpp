@@ -1,6 +1,6 @@
 // The offscreen context through EGL without a window (linked only into clothlab-render-egl and the
 // EGL render tests; offscreen_osmesa.cpp is the other implementation of offscreen.h). For Mesa
-// after OSMesa (removed in Mesa 25.1): a compatibility-profile OpenGL context on Mesa's surfaceless
+// after OSMesa (removed in Mesa 25.1): an OpenGL 3.3 core-profile context on Mesa's surfaceless
 // platform (EGL_MESA_platform_surfaceless), or else on the first EGL device (EGL_EXT_platform_device).
 // Neither has a default framebuffer, so the context draws into a framebuffer object (RGBA8 colour,
 // 24-bit depth, 8-bit stencil) that read() reads back like OSMesa's buffer.
@@ -90,10 +90,11 @@ OffscreenContext::OffscreenContext(int width, int height) : impl_(std::make_uniq
     EGLConfig config = nullptr;
     EGLint configs = 0;
     if (!eglChooseConfig(m.display, want, &config, 1, &configs) || configs < 1) config = EGL_NO_CONFIG_KHR;
-    // Compatibility profile: the fixed-function pipeline and ImGui's OpenGL2 backend need it.
-    const EGLint attribs[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
+    // OpenGL 3.3 core profile, what the renderer and its ImGui backend are written for.
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     m.context = eglCreateContext(m.display, config, EGL_NO_CONTEXT, attribs);
-    if (m.context == EGL_NO_CONTEXT) fail(eglFailure("eglCreateContext (OpenGL, compatibility profile)"));
+    if (m.context == EGL_NO_CONTEXT) fail(eglFailure("eglCreateContext (OpenGL 3.3, core profile)"));
     if (!eglMakeCurrent(m.display, EGL_NO_SURFACE, EGL_NO_SURFACE, m.context))
         fail(eglFailure("eglMakeCurrent without a surface (EGL_KHR_surfaceless_context)"));
 

@@ -16,12 +16,12 @@ struct OffscreenContext::Impl {
 };
 
 OffscreenContext::OffscreenContext(int width, int height) : impl_(std::make_unique<Impl>()), width_(width), height_(height) {
-    // A compatibility-profile context (no profile attribute): the fixed-function pipeline and
-    // ImGui's OpenGL2 backend both need it.
+    // An OpenGL 3.3 core-profile context, what the renderer and its ImGui backend are written for.
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
-                           OSMESA_ACCUM_BITS, 0, 0};
+                           OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
     impl_->ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-    if (!impl_->ctx) throw OffscreenError("OSMesa: cannot create an offscreen OpenGL context");
+    if (!impl_->ctx) throw OffscreenError("OSMesa: cannot create an offscreen OpenGL 3.3 core context");
     impl_->buffer.resize(4 * static_cast<size_t>(width) * height);
     if (!OSMesaMakeCurrent(impl_->ctx, impl_->buffer.data(), GL_UNSIGNED_BYTE, width, height)) {
         OSMesaDestroyContext(impl_->ctx);

@@ -1,52 +1,7 @@
-// The OpenGL renderer (fixed-function pipeline; works in OSMesa, EGL and a GLFW window alike, and in a
-// browser through Emscripten's GL emulation: ./lab web, cmake/web.cmake).
+// The OpenGL renderer: shaders and buffer objects on OpenGL 3.3 core (OSMesa, EGL, a GLFW window) and,
+// from the same source, on WebGL2 (./lab web, cmake/web.cmake). The one difference, the GLSL version
+// line, is chosen in gl.h by the build switch CLOTHLAB_WEB.
 #include "clothlab/render/renderer.h"
-
-#include <GL/gl.h>
-
-#ifdef CLOTHLAB_WEB
-// The browser build's one difference: Emscripten's emulation of fixed-function GL on WebGL
-// (-sLEGACY_GL_EMULATION, cmake/web.cmake). Between glBegin() and glEnd() it takes a vertex's
-// attributes in the order they are called and needs every one for every vertex, where GL keeps a
-// current colour and normal: the calls below keep them and give each vertex both. It has the float
-// forms of these calls only, no separate specular colour (it adds the specular term before
-// texturing, the same here: lit surfaces are not textured), one material for both sides
-// (setMaterial()), and reads client-side indices as 16-bit only (drawTriangleList()).
-namespace {
-struct Immediate {
-    bool inside = false;
-    GLfloat color[4] = {1, 1, 1, 1};
-    GLfloat normal[3] = {0, 0, 1};
-} immediate;
-void webBegin(GLenum mode) { immediate.inside = true, glBegin(mode); }
-void webEnd() { immediate.inside = false, glEnd(); }
-void webColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
-    immediate.color[0] = r, immediate.color[1] = g, immediate.color[2] = b, immediate.color[3] = a;
-    if (!immediate.inside) glColor4f(r, g, b, a);
-}
-void webColor3f(GLfloat r, GLfloat g, GLfloat b) { webColor4f(r, g, b, 1); }
-void webNormal3d(GLdouble x, GLdouble y, GLdouble z) {
-    immediate.normal[0] = GLfloat(x), immediate.normal[1] = GLfloat(y), immediate.normal[2] = GLfloat(z);
-}
-void webVertex3d(GLdouble x, GLdouble y, GLdouble z) {
-    glColor4f(immediate.color[0], immediate.color[1], immediate.color[2], immediate.color[3]);
-    glNormal3f(immediate.normal[0], immediate.normal[1], immediate.normal[2]);
-    glVertex3f(GLfloat(x), GLfloat(y), GLfloat(z));
-}
-void webMaterialf(GLenum face, GLenum pname, GLfloat v) { glMaterialfv(face, pname, &v); }
-void webLightModeli(GLenum pname, GLint v) {
-    if (pname == GL_LIGHT_MODEL_TWO_SIDE) glLightModelf(pname, GLfloat(v));
-}
-}  // namespace
-#define glBegin webBegin
-#define glEnd webEnd
-#define glColor4f webColor4f
-#define glColor3f webColor3f
-#define glNormal3d webNormal3d
-#define glVertex3d webVertex3d
-#define glMaterialf webMaterialf
-#define glLightModeli webLightModeli
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -55,6 +10,8 @@ void webLightModeli(GLenum pname, GLint v) {
 #include <map>
 #include <utility>
 
+#include "gl.h"
+
 namespace clothlab {
 
 namespace {
@@ -62,18 +19,80 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 const float kBackground[3] = {0.88f, 0.91f, 0.95f};  // the views' background, RGB
 
-void setMaterial(GLenum face, const Eigen::Vector3f& c, float spec, float shininess) {
-#ifdef CLOTHLAB_WEB
-    if (face == GL_BACK) return;  // the emulation has one material for both sides: back faces look like the front
-#endif
-    const float amb[4] = {0.35f * c[0], 0.35f * c[1], 0.35f * c[2], 1};
-    const float dif[4] = {c[0], c[1], c[2], 1};
-    const float sp[4] = {spec, spec, spec, 1};
-    glMaterialfv(face, GL_AMBIENT, amb);
-    glMaterialfv(face, GL_DIFFUSE, dif);
-    glMaterialfv(face, GL_SPECULAR, sp);
-    glMaterialf(face, GL_SHININESS, shininess);
+// The vertex attributes' locations, as bound in the program and used by every vertex array.
+enum Attribute { kPosition = 0, kNormal = 1, kColor = 2, kUv = 3 };
+const char* const kAttributes[] = {"aPosition", "aNormal", "aColor", "aUv"};
+
+// One shader source, compiled twice: with LIT (lit per pixel like the former fixed-function lighting:
+// two directional lights that follow the camera, a warm key light with a specular highlight and a
+// cool fill light, a global ambient term, two-sided with a material per side, the checker texture
+// modulating the diffuse part and the specular term added after it) and without (unlit: the vertex's
+// colour, or one colour for the whole draw, the attribute's constant value; points round with
+// uRound). Two programs, not one with a branch: llvmpipe would run the lighting for every line too.
+const char* const kVertexShader = R"(
+in vec3 aPosition;
+in vec3 aNormal;
+in vec4 aColor;
+in vec2 aUv;
+uniform mat4 uProjection;
+uniform mat4 uModelView;
+uniform float uPointSize;
+out vec3 vNormal;
+out vec4 vColor;
+out vec2 vUv;
+void main() {
+    gl_Position = uProjection * (uModelView * vec4(aPosition, 1.0));
+    vNormal = mat3(uModelView) * aNormal;  // eye space; the model-view scales uniformly, if at all
+    vColor = aColor;
+    vUv = aUv;
+    gl_PointSize = uPointSize;
 }
+)";
+const char* const kFragmentShader = R"(
+in vec3 vNormal;
+in vec4 vColor;
+in vec2 vUv;
+out vec4 fragColor;
+#ifdef LIT
+uniform bool uTextured;
+uniform vec3 uFront;      // diffuse colour of front faces (ambient: 0.35 of it)
+uniform vec3 uBack;       // of back faces
+uniform vec2 uSpecular;   // specular reflectance, front and back
+uniform float uShininess;
+uniform sampler2D uTexture;
+const vec3 kKey = vec3(-0.28625, 0.61340, 0.73607);  // normalize(-0.35, 0.75, 0.9), eye space
+const vec3 kFill = vec3(0.76200, -0.12700, 0.63500);  // normalize(0.6, -0.1, 0.5)
+const vec3 kHalf = vec3(-0.15362, 0.32919, 0.93169);  // normalize(kKey + (0, 0, 1)): the viewer at infinity
+void main() {
+    vec3 n = normalize(vNormal), m = uFront;
+    float s = uSpecular.x;
+    if (!gl_FrontFacing) {
+        n = -n;
+        m = uBack;
+        s = uSpecular.y;
+    }
+    float kd = max(dot(n, kKey), 0.0);
+    vec3 c = m * (0.35 * vec3(0.25, 0.25, 0.27) + kd * vec3(0.80, 0.80, 0.78) + max(dot(n, kFill), 0.0) * vec3(0.30, 0.32, 0.36));
+    c = min(c, vec3(1.0));
+    if (uTextured) c *= texture(uTexture, vUv).rgb;
+    float h = max(dot(n, kHalf), 0.0);
+    fragColor = vec4(min(c + (kd > 0.0 ? 0.5 * s * pow(h, uShininess) : 0.0), vec3(1.0)), 1.0);
+}
+#else
+uniform bool uRound;
+void main() {
+    if (uRound && length(gl_PointCoord - vec2(0.5)) > 0.5) discard;
+    fragColor = vColor;
+}
+#endif
+)";
+
+// Triangles with optional per-vertex normals, indexed.
+struct TriangleList {
+    std::vector<float> xyz;     // positions, 3 floats per vertex, m
+    std::vector<float> nrm;     // per-vertex normals, 3 floats per vertex
+    std::vector<unsigned> idx;  // 3 vertex indices per triangle
+};
 
 // A unit sphere (lat-long), as the triangles of `stacks` triangle strips in their winding order;
 // made once per resolution.
@@ -99,27 +118,6 @@ const TriangleList& unitSphere(int slices, int stacks) {
     return t;
 }
 
-// A sphere at centre c with radius r (GL_NORMALIZE keeps the scaled normals unit).
-void drawSphere(const Vec3& c, double r, int slices = 32, int stacks = 16) {
-    glPushMatrix();
-    glTranslated(c.x(), c.y(), c.z());
-    glScaled(r, r, r);
-    drawTriangleList(unitSphere(slices, stacks));
-    glPopMatrix();
-}
-
-// An orthonormal pair spanning the plane with normal n.
-// Flat-shaded triangles, 3 x 3K corners (a box, capsule or mesh collider from DrawData::collider_triangles).
-void drawFlatTriangles(const Matrix3X& corners) {
-    glBegin(GL_TRIANGLES);
-    for (Eigen::Index k = 0; k + 2 < corners.cols(); k += 3) {
-        const Vec3 n = (corners.col(k + 1) - corners.col(k)).cross(corners.col(k + 2) - corners.col(k)).normalized();
-        glNormal3d(n.x(), n.y(), n.z());
-        for (int j = 0; j < 3; ++j) glVertex3d(corners(0, k + j), corners(1, k + j), corners(2, k + j));
-    }
-    glEnd();
-}
-
 // The convex hull of the points' (x, z), counter-clockwise seen from above (Andrew's monotone chain).
 std::vector<int> groundHull(const Matrix3X& x) {
     std::vector<int> order(static_cast<size_t>(x.cols()));
@@ -142,52 +140,149 @@ std::vector<int> groundHull(const Matrix3X& x) {
     return h;
 }
 
+// An orthonormal pair spanning the plane with normal n.
 void planeAxes(const Vec3& n, Vec3& a, Vec3& b) {
     a = (std::abs(n.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)).cross(n).normalized();
     b = n.cross(a);
 }
 
-void lights() {
-    // Light positions in eye space (the modelview is the identity here): the light follows the camera.
-    const float key[4] = {-0.35f, 0.75f, 0.9f, 0}, keyc[4] = {0.80f, 0.80f, 0.78f, 1};
-    const float fill[4] = {0.6f, -0.1f, 0.5f, 0}, fillc[4] = {0.30f, 0.32f, 0.36f, 1};
-    const float spec[4] = {0.5f, 0.5f, 0.5f, 1}, none[4] = {0, 0, 0, 1};
-    const float ambient[4] = {0.25f, 0.25f, 0.27f, 1};
-    glLightfv(GL_LIGHT0, GL_POSITION, key);
-    glLightfv(GL_LIGHT0, GL_DIFFUSE, keyc);
-    glLightfv(GL_LIGHT0, GL_SPECULAR, spec);
-    glLightfv(GL_LIGHT0, GL_AMBIENT, none);
-    glLightfv(GL_LIGHT1, GL_POSITION, fill);
-    glLightfv(GL_LIGHT1, GL_DIFFUSE, fillc);
-    glLightfv(GL_LIGHT1, GL_SPECULAR, none);
-    glLightfv(GL_LIGHT1, GL_AMBIENT, none);
-    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
-    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
-    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
-    glEnable(GL_LIGHT0);
-    glEnable(GL_LIGHT1);
+
+// A vertex array object and its buffers: one per attribute (kPosition .. kUv) and the indices.
+struct Mesh {
+    GLuint vao = 0;
+    gl::Buffer attr[4];
+    gl::Buffer idx;
+    GLsizei indices = 0;  // how many indices were uploaded last
+
+    void bind() {
+        if (vao == 0) glGenVertexArrays(1, &vao);
+        glBindVertexArray(vao);
+    }
+    // Uploads an attribute (`size` floats per vertex) and enables its array; an empty one disables it
+    // (the shader then reads the attribute's constant value, glVertexAttrib*()).
+    void set(Attribute a, const std::vector<float>& v, int size) {
+        bind();
+        if (v.empty()) {
+            glDisableVertexAttribArray(a);
+            return;
+        }
+        attr[a].upload(GL_ARRAY_BUFFER, v.data(), static_cast<long>(v.size() * sizeof(float)));
+        glVertexAttribPointer(a, size, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glEnableVertexAttribArray(a);
+    }
+    void setIndices(const std::vector<unsigned>& i) {
+        bind();
+        idx.upload(GL_ELEMENT_ARRAY_BUFFER, i.data(), static_cast<long>(i.size() * sizeof(unsigned)));
+        indices = static_cast<GLsizei>(i.size());
+    }
+    void drawElements() {
+        bind();
+        glDrawElements(GL_TRIANGLES, indices, GL_UNSIGNED_INT, nullptr);
+    }
+    void drawArrays(GLenum mode, GLint first, GLsizei count) {
+        bind();
+        if (count > 0) glDrawArrays(mode, first, count);
+    }
+};
+
+Eigen::Matrix4f toFloat(const Eigen::Matrix4d& m) { return m.cast<float>(); }
+
+// Blending "over" for the colour; the framebuffer's alpha stays 1 (an opaque picture: a PNG, and a
+// browser's canvas, which the page would otherwise show through).
+void blendOver() {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
 }
+
+void push(std::vector<float>& v, const Vec3& p) {
+    for (int k = 0; k < 3; ++k) v.push_back(static_cast<float>(p[k]));
+}
+void push(std::vector<float>& v, double x, double y, double z) { push(v, Vec3(x, y, z)); }
 
 }  // namespace
 
-void drawTriangleList(const TriangleList& t) {
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glVertexPointer(3, GL_FLOAT, 0, t.xyz.data());
-    if (!t.nrm.empty()) {
-        glEnableClientState(GL_NORMAL_ARRAY);
-        glNormalPointer(GL_FLOAT, 0, t.nrm.data());
+// The renderer's GL objects (made in the context current at the first draw) and per-frame scratch.
+struct Renderer::Gpu {
+    // One of the two programs and its uniforms' locations (-1: not in this one).
+    struct Program {
+        GLuint id = 0;
+        GLint uProjection = -1, uModelView = -1, uPointSize = -1, uRound = -1, uTextured = -1;
+        GLint uFront = -1, uBack = -1, uSpecular = -1, uShininess = -1, uTexture = -1;
+        void make(const char* defines) {
+            id = gl::program(kVertexShader, kFragmentShader, kAttributes, 4, defines);
+            const auto u = [this](const char* name) { return glGetUniformLocation(id, name); };
+            uProjection = u("uProjection"), uModelView = u("uModelView"), uPointSize = u("uPointSize");
+            uRound = u("uRound"), uTextured = u("uTextured"), uFront = u("uFront"), uBack = u("uBack");
+            uSpecular = u("uSpecular"), uShininess = u("uShininess"), uTexture = u("uTexture");
+        }
+    };
+    Program shaded, flat;              // lit (LIT) and unlit
+    Program* current = nullptr;        // the one in use
+    GLuint texture = 0;  // checker texture of the cloth (0: not created yet)
+    std::map<std::pair<int, int>, Mesh> spheres;  // unit spheres by (slices, stacks), uploaded once
+    Mesh cloth, ground, grid, shadow, colliders, edges, points, rings, planes;
+    Eigen::Matrix4f view = Eigen::Matrix4f::Identity();
+    std::vector<float> xyz, nrm, rgba, uv;  // scratch, refilled for each upload
+    std::vector<unsigned> idx;
+    std::vector<unsigned> clothIdx;  // the cloth's indices as uploaded (uploaded again when they change)
+
+    void make() {
+        shaded.make("#define LIT\n");
+        flat.make("");
     }
-#ifdef CLOTHLAB_WEB
-    // The emulation reads indices from client memory as 16-bit only (up to 65536 vertices: a 256 x 256 cloth).
-    static std::vector<unsigned short> idx16;
-    idx16.assign(t.idx.begin(), t.idx.end());
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(idx16.size()), GL_UNSIGNED_SHORT, idx16.data());
-#else
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(t.idx.size()), GL_UNSIGNED_INT, t.idx.data());
-#endif
-    glDisableClientState(GL_NORMAL_ARRAY);
-    glDisableClientState(GL_VERTEX_ARRAY);
-}
+    void use(Program& p) {
+        if (current != &p) glUseProgram(p.id), current = &p;
+    }
+    // Both programs: this frame's projection and view, no texture, unit-sized square points.
+    void begin(const Eigen::Matrix4f& projection) {
+        for (Program* p : {&shaded, &flat}) {
+            glUseProgram(p->id);
+            glUniformMatrix4fv(p->uProjection, 1, GL_FALSE, projection.data());
+            glUniformMatrix4fv(p->uModelView, 1, GL_FALSE, view.data());
+            glUniform1i(p->uTextured, 0);
+            glUniform1i(p->uTexture, 0);
+            glUniform1i(p->uRound, 0);
+            glUniform1f(p->uPointSize, 1.0f);
+        }
+        current = &flat;
+    }
+    void modelView(const Eigen::Matrix4f& mv) { glUniformMatrix4fv(current->uModelView, 1, GL_FALSE, mv.data()); }
+    // Unlit, in one colour (the colour attribute's constant value; a mesh with colours ignores it).
+    void unlit(float r, float g, float b, float a = 1) {
+        use(flat);
+        glVertexAttrib4f(kColor, r, g, b, a);
+    }
+    // Lit, with a material per side: diffuse colour (ambient 0.35 of it), specular reflectance, shininess.
+    void lit(const Eigen::Vector3f& front, const Eigen::Vector3f& back, float spec_front, float spec_back, float shininess) {
+        use(shaded);
+        glUniform3f(shaded.uFront, front[0], front[1], front[2]);
+        glUniform3f(shaded.uBack, back[0], back[1], back[2]);
+        glUniform2f(shaded.uSpecular, spec_front, spec_back);
+        glUniform1f(shaded.uShininess, shininess);
+    }
+    void lit(const Eigen::Vector3f& c, float spec, float shininess) { lit(c, c, spec, spec, shininess); }
+    // A lit sphere at centre c with radius r (the current material), a unit sphere scaled.
+    void sphere(const Vec3& c, double r, int slices, int stacks) {
+        Mesh& m = spheres[{slices, stacks}];
+        if (m.vao == 0) {
+            const TriangleList& t = unitSphere(slices, stacks);
+            m.set(kPosition, t.xyz, 3);
+            m.set(kNormal, t.nrm, 3);
+            m.setIndices(t.idx);
+        }
+        Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+        model.topLeftCorner<3, 3>() *= static_cast<float>(r);
+        model.topRightCorner<3, 1>() = c.cast<float>();
+        modelView(view * model);
+        m.drawElements();
+        modelView(view);
+    }
+};
+
+Renderer::Renderer() = default;
+Renderer::~Renderer() = default;  // the GL objects stay: the context may be gone (one Renderer per context)
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 Eigen::Vector3f edgeKindColor(EdgeKind kind) {
     switch (kind) {
@@ -240,35 +335,30 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
 
 void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& opt, const Viewport& vp, int fb_height) {
     lap(nullptr);
+    if (!gpu_) gpu_ = std::make_unique<Gpu>(), gpu_->make();
+    Gpu& g = *gpu_;
     const int width = vp.width, height = vp.height;
     glViewport(vp.x, fb_height - vp.y - vp.height, width, height);
     glScissor(vp.x, fb_height - vp.y - vp.height, width, height);
     glEnable(GL_SCISSOR_TEST);  // clear and draw only this part of the framebuffer
     glDisable(GL_DITHER);
+    glDepthMask(GL_TRUE);
     glClearColor(kBackground[0], kBackground[1], kBackground[2], 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glDisable(GL_TEXTURE_2D);
-    glDisable(GL_LIGHTING);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
 
     // Background: the clear colour, a light blue-grey (a gradient quad over the whole view cost a
     // full-screen pass of llvmpipe's fragment work per frame: docs/performance.md).
     lap("background");
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    lights();  // in eye space, before the view matrix
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
-    glEnable(GL_NORMALIZE);
-    glShadeModel(GL_SMOOTH);
-    glMatrixMode(GL_PROJECTION);
+#if CLOTHLAB_GL_DESKTOP
+    glEnable(GL_PROGRAM_POINT_SIZE);  // the vertex shader sets the point size (always so in GLSL ES)
+#endif
     const Eigen::Matrix4d P = cam.projection(double(width) / height), V = cam.view();
-    glLoadMatrixd(P.data());
-    glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixd(V.data());
+    g.view = toFloat(V);
+    g.begin(toFloat(P));
 
     right_ = V.block<1, 3>(0, 0).transpose();
     up_ = V.block<1, 3>(1, 0).transpose();
@@ -293,122 +383,137 @@ void Renderer::draw(const DrawData& d, const Camera& cam, const RenderOptions& o
     const int ncell = std::min(16, static_cast<int>(std::ceil(3.0 * scale / cell)));
     if (opt.ground) {
         if (ground_is_plane && opt.colliders) {
-            glColor3f(0.86f, 0.87f, 0.88f);
+            const double e = ncell * cell;
+            g.xyz.clear();
+            for (const auto& [dx, dz] : {std::pair(-e, -e), std::pair(-e, e), std::pair(e, e), std::pair(-e, -e), std::pair(e, e), std::pair(e, -e)})
+                push(g.xyz, gx0 + dx, gy, gz0 + dz);
+            g.ground.set(kPosition, g.xyz, 3);
+            g.unlit(0.86f, 0.87f, 0.88f);
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(1, 1);
-            glBegin(GL_QUADS);
-            const double e = ncell * cell;
-            glVertex3d(gx0 - e, gy, gz0 - e);
-            glVertex3d(gx0 - e, gy, gz0 + e);
-            glVertex3d(gx0 + e, gy, gz0 + e);
-            glVertex3d(gx0 + e, gy, gz0 - e);
-            glEnd();
+            g.ground.drawArrays(GL_TRIANGLES, 0, 6);
             glDisable(GL_POLYGON_OFFSET_FILL);
         }
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        blendOver();
         glLineWidth(1.0f);
-        glBegin(GL_LINES);
+        g.xyz.clear();
+        g.rgba.clear();
         for (int k = -ncell; k <= ncell; ++k) {
             const float a = (k % 10 == 0) ? 0.45f : (k % 5 == 0 ? 0.30f : 0.16f);
-            glColor4f(0.35f, 0.38f, 0.45f, a);
-            glVertex3d(gx0 + k * cell, gy, gz0 - ncell * cell);
-            glVertex3d(gx0 + k * cell, gy, gz0 + ncell * cell);
-            glVertex3d(gx0 - ncell * cell, gy, gz0 + k * cell);
-            glVertex3d(gx0 + ncell * cell, gy, gz0 + k * cell);
+            push(g.xyz, gx0 + k * cell, gy, gz0 - ncell * cell);
+            push(g.xyz, gx0 + k * cell, gy, gz0 + ncell * cell);
+            push(g.xyz, gx0 - ncell * cell, gy, gz0 + k * cell);
+            push(g.xyz, gx0 + ncell * cell, gy, gz0 + k * cell);
+            for (int v = 0; v < 4; ++v) g.rgba.insert(g.rgba.end(), {0.35f, 0.38f, 0.45f, a});
         }
-        glEnd();
+        g.grid.set(kPosition, g.xyz, 3);
+        g.grid.set(kColor, g.rgba, 4);
+        g.unlit(0, 0, 0);
+        g.grid.drawArrays(GL_LINES, 0, static_cast<GLsizei>(g.xyz.size() / 3));
         lap("ground and grid");
-        // A soft shadow of the cloth and the particles straight down on the ground.
+        // A soft shadow of the cloth and the particles straight down on the ground, one draw of triangles.
         glDepthMask(GL_FALSE);
-        glColor4f(0.1f, 0.12f, 0.18f, 0.12f);
         const double sy = gy + 1e-3 * scale;
+        g.xyz.clear();
+        // A fan around (cx, cz) with radius r in `segments` triangles.
+        const auto disc = [&](double cx, double cz, double r, int segments) {
+            for (int k = 0; k < segments; ++k) {
+                push(g.xyz, cx, sy, cz);
+                push(g.xyz, cx + r * std::cos(2 * kPi * k / segments), sy, cz + r * std::sin(2 * kPi * k / segments));
+                push(g.xyz, cx + r * std::cos(2 * kPi * (k + 1) / segments), sy, cz + r * std::sin(2 * kPi * (k + 1) / segments));
+            }
+        };
         if (!d.triangles.empty()) {
             // The convex hull of the cloth projected straight down, one fan: a soft blob in place of
             // every triangle's projection (which cost llvmpipe a triangle setup each, twice per frame
             // with the cloth itself; docs/performance.md).
-            TriangleList& shadow = scratch_;
             const std::vector<int> hull = groundHull(d.x);
-            shadow.xyz.clear();
-            shadow.nrm.clear();
-            shadow.idx.clear();
-            for (int i : hull)
-                for (const double v : {d.x(0, i), sy, d.x(2, i)}) shadow.xyz.push_back(static_cast<float>(v));
             for (size_t k = 1; k + 1 < hull.size(); ++k)
-                shadow.idx.insert(shadow.idx.end(), {0u, static_cast<unsigned>(k), static_cast<unsigned>(k + 1)});
-            drawTriangleList(shadow);
+                for (const int i : {hull[0], hull[k], hull[k + 1]}) push(g.xyz, d.x(0, i), sy, d.x(2, i));
         }
-        for (const Collider& c : d.colliders) {
-            if (c.type != Collider::Type::Sphere || !opt.colliders) continue;
-            glBegin(GL_TRIANGLE_FAN);
-            glVertex3d(c.point.x(), sy, c.point.z());
-            for (int k = 0; k <= 48; ++k)
-                glVertex3d(c.point.x() + 0.9 * c.radius * std::cos(2 * kPi * k / 48), sy,
-                           c.point.z() + 0.9 * c.radius * std::sin(2 * kPi * k / 48));
-            glEnd();
-        }
-        if (d.triangles.empty()) {
-            for (int i = 0; i < d.x.cols(); ++i) {
-                glBegin(GL_TRIANGLE_FAN);
-                glVertex3d(d.x(0, i), sy, d.x(2, i));
-                for (int k = 0; k <= 24; ++k)
-                    glVertex3d(d.x(0, i) + 0.05 * scale * std::cos(2 * kPi * k / 24), sy,
-                               d.x(2, i) + 0.05 * scale * std::sin(2 * kPi * k / 24));
-                glEnd();
-            }
-        }
+        for (const Collider& c : d.colliders)
+            if (c.type == Collider::Type::Sphere && opt.colliders) disc(c.point.x(), c.point.z(), 0.9 * c.radius, 48);
+        if (d.triangles.empty())
+            for (int i = 0; i < d.x.cols(); ++i) disc(d.x(0, i), d.x(2, i), 0.05 * scale, 24);
+        g.shadow.set(kPosition, g.xyz, 3);
+        g.unlit(0.1f, 0.12f, 0.18f, 0.12f);
+        g.shadow.drawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(g.xyz.size() / 3));
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
 
     lap("shadow");
+    // The cloth before the colliders: the parts of a sphere or table it covers then fail the depth test
+    // before their lighting is computed (llvmpipe tests depth first for a shader without discard).
+    if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
+    lap("cloth");
     // Colliders.
     if (opt.colliders) {
-        glEnable(GL_LIGHTING);
         for (const Collider& c : d.colliders) {
             if (c.type == Collider::Type::Sphere) {
-                setMaterial(GL_FRONT_AND_BACK, {0.55f, 0.60f, 0.66f}, 0.35f, 40);
-                drawSphere(c.point, std::max(c.radius - 0.5e-3 * scale, 0.0), 48, 24);
+                g.lit({0.55f, 0.60f, 0.66f}, 0.35f, 40);
+                g.sphere(c.point, std::max(c.radius - 0.5e-3 * scale, 0.0), 48, 24);
             }
         }
-        setMaterial(GL_FRONT_AND_BACK, {0.62f, 0.56f, 0.50f}, 0.2f, 30);
-        for (const Matrix3X& corners : d.collider_triangles) drawFlatTriangles(corners);
-        glDisable(GL_LIGHTING);
+        // Flat-shaded triangles (boxes, capsules, meshes): each corner with its triangle's normal.
+        g.xyz.clear();
+        g.nrm.clear();
+        for (const Matrix3X& corners : d.collider_triangles)
+            for (Eigen::Index k = 0; k + 2 < corners.cols(); k += 3) {
+                const Vec3 n = (corners.col(k + 1) - corners.col(k)).cross(corners.col(k + 2) - corners.col(k)).normalized();
+                for (int j = 0; j < 3; ++j) push(g.xyz, corners.col(k + j)), push(g.nrm, n);
+            }
+        if (!g.xyz.empty()) {
+            g.colliders.set(kPosition, g.xyz, 3);
+            g.colliders.set(kNormal, g.nrm, 3);
+            g.lit({0.62f, 0.56f, 0.50f}, 0.2f, 30);
+            g.colliders.drawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(g.xyz.size() / 3));
+        }
     }
 
     lap("colliders");
-    if (opt.surface && !d.triangles.empty()) drawSurface(d, scale);
-    lap("cloth");
     if (opt.edges || d.triangles.empty()) drawEdges(d, opt, scale);
     lap("edges");
     drawParticles(d, opt, scale);
 
     // Planes other than the ground: translucent panels with a border, drawn last so what lies behind shows.
     if (opt.colliders) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
+        g.xyz.clear();
+        int panels = 0;
         for (const Collider& c : d.colliders) {
             if (c.type != Collider::Type::Plane || (ground_is_plane && c.normal.y() > 0.99)) continue;
             Vec3 a, b;
             planeAxes(c.normal, a, b);
             const Vec3 o = c.point + (cam.target - c.point).dot(a) * a + (cam.target - c.point).dot(b) * b;
             const double e = 1.2 * scale;
-            const Vec3 quad[4] = {o - e * a - e * b, o + e * a - e * b, o + e * a + e * b, o - e * a + e * b};
-            glColor4f(0.55f, 0.62f, 0.75f, 0.30f);
-            glBegin(GL_QUADS);
-            for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
-            glEnd();
-            glColor4f(0.30f, 0.36f, 0.50f, 0.8f);
-            glLineWidth(1.5f);
-            glBegin(GL_LINE_LOOP);
-            for (const Vec3& v : quad) glVertex3d(v.x(), v.y(), v.z());
-            glEnd();
-            glLineWidth(1.0f);
+            const Vec3 q[4] = {o - e * a - e * b, o + e * a - e * b, o + e * a + e * b, o - e * a + e * b};
+            for (const int i : {0, 1, 2, 0, 2, 3}) push(g.xyz, q[i]);  // the panel, two triangles
+            ++panels;
         }
-        glDepthMask(GL_TRUE);
-        glDisable(GL_BLEND);
+        if (panels) {
+            // The borders: corners 0, 1, 2, 3 of each panel are its vertices 0, 1, 2, 5.
+            const size_t tri = g.xyz.size();
+            for (int p = 0; p < panels; ++p)
+                for (int i = 0; i < 4; ++i) {
+                    static const int corner[4] = {0, 1, 2, 5};
+                    for (const int c : {corner[i], corner[(i + 1) % 4]})
+                        for (int k = 0; k < 3; ++k) g.xyz.push_back(g.xyz[18 * static_cast<size_t>(p) + 3 * c + k]);
+                }
+            g.planes.set(kPosition, g.xyz, 3);
+            blendOver();
+            glDepthMask(GL_FALSE);
+            g.unlit(0.55f, 0.62f, 0.75f, 0.30f);
+            g.planes.drawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tri / 3));
+            g.unlit(0.30f, 0.36f, 0.50f, 0.8f);
+            glLineWidth(1.5f);
+            g.planes.drawArrays(GL_LINES, static_cast<GLint>(tri / 3), static_cast<GLsizei>((g.xyz.size() - tri) / 3));
+            glLineWidth(1.0f);
+            glDepthMask(GL_TRUE);
+            glDisable(GL_BLEND);
+        }
     }
+    glBindVertexArray(0);
+    glUseProgram(0);
     glDisable(GL_SCISSOR_TEST);
     glFlush();  // llvmpipe rasterizes on its own threads from here; the caller may step the simulation meanwhile
     lap("particles and planes");
@@ -421,6 +526,7 @@ void Renderer::triangleIndices(const DrawData& d, std::vector<unsigned>& idx) {
 }
 
 void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
+    Gpu& g = *gpu_;
     const int n = static_cast<int>(d.x.cols());
     // Smooth shading: per-vertex normals, the area-weighted sum of the face normals around each particle.
     Matrix3X nrm = Matrix3X::Zero(3, n);
@@ -428,22 +534,27 @@ void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
         const Vec3 fn = (d.x.col(t[1]) - d.x.col(t[0])).cross(d.x.col(t[2]) - d.x.col(t[0]));
         for (int k = 0; k < 3; ++k) nrm.col(t[k]) += fn;
     }
-    TriangleList& cloth = scratch_;
-    cloth.xyz.resize(3 * static_cast<size_t>(n));
-    cloth.nrm.resize(3 * static_cast<size_t>(n));
+    g.xyz.resize(3 * static_cast<size_t>(n));
+    g.nrm.resize(3 * static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
         const double len = nrm.col(i).norm();
         for (int k = 0; k < 3; ++k) {
-            cloth.xyz[3 * i + k] = static_cast<float>(d.x(k, i));
-            cloth.nrm[3 * i + k] = static_cast<float>(len > 0 ? nrm(k, i) / len : (k == 2));
+            g.xyz[3 * i + k] = static_cast<float>(d.x(k, i));
+            g.nrm[3 * i + k] = static_cast<float>(len > 0 ? nrm(k, i) / len : (k == 2));
         }
     }
-    triangleIndices(d, cloth.idx);
+    g.cloth.set(kPosition, g.xyz, 3);
+    g.cloth.set(kNormal, g.nrm, 3);
+    triangleIndices(d, g.idx);
+    if (g.idx.size() != static_cast<size_t>(g.cloth.indices) || g.idx != g.clothIdx) {  // new topology only
+        g.cloth.setIndices(g.idx);
+        g.clothIdx = g.idx;
+    }
 
     const bool textured = d.uv.cols() == n;
-    std::vector<float> uv;  // texture coordinates, alive until the draw call
+    g.uv.clear();
     if (textured) {
-        if (texture_ == 0) {
+        if (g.texture == 0) {
             // A two-tone checker (8 x 8 squares) that makes stretching and folds visible.
             const int S = 64;
             std::vector<unsigned char> tex(S * S * 3);
@@ -452,47 +563,38 @@ void Renderer::drawSurface(const DrawData& d, double /*scale*/) {
                     const bool dark = ((x / 8) + (y / 8)) % 2;
                     for (int k = 0; k < 3; ++k) tex[3 * (y * S + x) + k] = dark ? 214 : 255;
                 }
-            GLuint id = 0;
-            glGenTextures(1, &id);
-            texture_ = id;
-            glBindTexture(GL_TEXTURE_2D, texture_);
+            glGenTextures(1, &g.texture);
+            glBindTexture(GL_TEXTURE_2D, g.texture);
             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
             glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, S, S, 0, GL_RGB, GL_UNSIGNED_BYTE, tex.data());
         }
-        glBindTexture(GL_TEXTURE_2D, texture_);
-        glEnable(GL_TEXTURE_2D);
-        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-        uv.resize(2 * static_cast<size_t>(n));
-        for (int i = 0; i < n; ++i) uv[2 * i] = static_cast<float>(d.uv(0, i)), uv[2 * i + 1] = static_cast<float>(d.uv(1, i));
-        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-        glTexCoordPointer(2, GL_FLOAT, 0, uv.data());
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, g.texture);
+        g.uv.resize(2 * static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) g.uv[2 * i] = static_cast<float>(d.uv(0, i)), g.uv[2 * i + 1] = static_cast<float>(d.uv(1, i));
     }
+    g.cloth.set(kUv, g.uv, 2);  // none: the array is off
     // Two-sided lighting: warm front, cool back.
-    glEnable(GL_LIGHTING);
-    setMaterial(GL_FRONT, {0.95f, 0.52f, 0.22f}, 0.25f, 24);
-    setMaterial(GL_BACK, {0.30f, 0.52f, 0.85f}, 0.15f, 24);
+    g.lit({0.95f, 0.52f, 0.22f}, {0.30f, 0.52f, 0.85f}, 0.25f, 0.15f, 24);
+    glUniform1i(g.shaded.uTextured, textured);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1, 1);
-    drawTriangleList(cloth);
-    if (textured) {
-        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
-        glDisable(GL_TEXTURE_2D);
-    }
+    g.cloth.drawElements();
+    glUniform1i(g.shaded.uTextured, 0);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_LIGHTING);
 }
 
 void Renderer::drawEdges(const DrawData& d, const RenderOptions& opt, double scale) {
-    glDisable(GL_LIGHTING);
+    Gpu& g = *gpu_;
     glLineWidth(opt.line_width);
-    lines_.clear();
-    colours_.clear();
+    g.xyz.clear();
+    g.rgba.clear();
     // A segment a-b in colour c, into the vertex arrays drawn at the end.
-    const auto segment = [this](const Vec3& a, const Vec3& b, const Eigen::Vector3f& c) {
-        for (const Vec3* p : {&a, &b})
-            for (int k = 0; k < 3; ++k) lines_.push_back(static_cast<float>((*p)[k])), colours_.push_back(c[k]);
+    const auto segment = [&g](const Vec3& a, const Vec3& b, const Eigen::Vector3f& c) {
+        push(g.xyz, a), push(g.xyz, b);
+        for (int v = 0; v < 2; ++v) g.rgba.insert(g.rgba.end(), {c[0], c[1], c[2], 1.0f});
     };
     for (size_t e = 0; e < d.edges.size(); ++e) {
         const EdgeKind kind = d.edge_kind.size() == d.edges.size() ? d.edge_kind[e] : EdgeKind::Single;
@@ -524,81 +626,68 @@ void Renderer::drawEdges(const DrawData& d, const RenderOptions& opt, double sca
             segment(a, b, c);
         }
     }
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glEnableClientState(GL_COLOR_ARRAY);
-    glVertexPointer(3, GL_FLOAT, 0, lines_.data());
-    glColorPointer(3, GL_FLOAT, 0, colours_.data());
-    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines_.size() / 3));
-    glDisableClientState(GL_COLOR_ARRAY);
-    glDisableClientState(GL_VERTEX_ARRAY);
+    g.edges.set(kPosition, g.xyz, 3);
+    g.edges.set(kColor, g.rgba, 4);
+    g.unlit(0, 0, 0);
+    g.edges.drawArrays(GL_LINES, 0, static_cast<GLsizei>(g.xyz.size() / 3));
     glLineWidth(1.0f);
 }
 
 void Renderer::drawParticles(const DrawData& d, const RenderOptions& opt, double scale) {
+    Gpu& g = *gpu_;
     const int n = static_cast<int>(d.x.cols());
     const bool few = n <= 400 && d.triangles.empty();
     if (few) {
         // Few particles (spring, chain): lit spheres, pinned ones as red anchors.
-        glEnable(GL_LIGHTING);
         for (int i = 0; i < n; ++i) {
             const bool pinned = d.w.size() == n && d.w[i] == 0;
             if (pinned && !opt.pinned) continue;
-            setMaterial(GL_FRONT_AND_BACK, pinned ? Eigen::Vector3f(0.85f, 0.12f, 0.10f) : Eigen::Vector3f(0.95f, 0.55f, 0.15f), 0.5f, 50);
-            drawSphere(d.x.col(i), (pinned ? 0.035 : (n > 3 ? 0.045 : 0.08)) * scale, 24, 12);
+            g.lit(pinned ? Eigen::Vector3f(0.85f, 0.12f, 0.10f) : Eigen::Vector3f(0.95f, 0.55f, 0.15f), 0.5f, 50);
+            g.sphere(d.x.col(i), (pinned ? 0.035 : (n > 3 ? 0.045 : 0.08)) * scale, 24, 12);
         }
         // The analytic solution as a green ring facing the camera, drawn on top.
-        glDisable(GL_LIGHTING);
-        glDisable(GL_DEPTH_TEST);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glEnable(GL_LINE_SMOOTH);
-        glLineWidth(3.0f);
-        glColor4f(0.10f, 0.70f, 0.25f, 0.9f);
+        if (d.ghosts.empty()) return;
+        g.xyz.clear();
         const double gr = (n > 3 ? 0.06 : 0.11) * scale;
-        for (const Vec3& g : d.ghosts) {
-            glBegin(GL_LINE_LOOP);
-            for (int k = 0; k < 48; ++k) {
-                const double a = 2 * kPi * k / 48;
-                const Vec3 p = g + gr * (std::cos(a) * right_ + std::sin(a) * up_);
-                glVertex3d(p.x(), p.y(), p.z());
-            }
-            glEnd();
-        }
+        for (const Vec3& c : d.ghosts)
+            for (int k = 0; k < 48; ++k)
+                for (const int j : {k, k + 1}) {
+                    const double a = 2 * kPi * j / 48;
+                    push(g.xyz, c + gr * (std::cos(a) * right_ + std::sin(a) * up_));
+                }
+        g.rings.set(kPosition, g.xyz, 3);
+        glDisable(GL_DEPTH_TEST);
+        blendOver();
+        glLineWidth(3.0f);
+        g.unlit(0.10f, 0.70f, 0.25f, 0.9f);
+        g.rings.drawArrays(GL_LINES, 0, static_cast<GLsizei>(g.xyz.size() / 3));
         glLineWidth(1.0f);
-        glDisable(GL_LINE_SMOOTH);
         glDisable(GL_BLEND);
         glEnable(GL_DEPTH_TEST);
-        glDisable(GL_LIGHTING);
         return;
     }
-    glEnable(GL_POINT_SMOOTH);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     if (opt.particles && n <= 20000) {
-        glPointSize(n > 2000 ? 2.0f : 3.5f);
-        glColor3f(0.20f, 0.20f, 0.25f);
-        lines_.resize(3 * static_cast<size_t>(n));
+        // Round points (the fragment shader cuts the square to a disc).
+        blendOver();
+        g.xyz.resize(3 * static_cast<size_t>(n));
         for (int i = 0; i < n; ++i)
-            for (int k = 0; k < 3; ++k) lines_[3 * i + k] = static_cast<float>(d.x(k, i));
-        glEnableClientState(GL_VERTEX_ARRAY);
-        glVertexPointer(3, GL_FLOAT, 0, lines_.data());
-        glDrawArrays(GL_POINTS, 0, n);
-        glDisableClientState(GL_VERTEX_ARRAY);
+            for (int k = 0; k < 3; ++k) g.xyz[3 * i + k] = static_cast<float>(d.x(k, i));
+        g.points.set(kPosition, g.xyz, 3);
+        g.unlit(0.20f, 0.20f, 0.25f);
+        glUniform1f(g.flat.uPointSize, n > 2000 ? 2.0f : 3.5f);
+        glUniform1i(g.flat.uRound, 1);
+        g.points.drawArrays(GL_POINTS, 0, n);
+        glUniform1i(g.flat.uRound, 0);
+        glUniform1f(g.flat.uPointSize, 1.0f);
+        glDisable(GL_BLEND);
     }
-    glDisable(GL_BLEND);
-    glDisable(GL_POINT_SMOOTH);
     if (opt.pinned && d.w.size() == n) {
         // Pinned particles of a cloth: small red spheres.
-        glEnable(GL_LIGHTING);
-        setMaterial(GL_FRONT_AND_BACK, {0.85f, 0.12f, 0.10f}, 0.5f, 50);
+        g.lit({0.85f, 0.12f, 0.10f}, 0.5f, 50);
         int drawn = 0;
         for (int i = 0; i < n && drawn < 2000; ++i)
-            if (d.w[i] == 0) drawSphere(d.x.col(i), 0.02 * scale, 16, 8), ++drawn;
-        glDisable(GL_LIGHTING);
+            if (d.w[i] == 0) g.sphere(d.x.col(i), 0.02 * scale, 16, 8), ++drawn;
     }
-    glDisable(GL_BLEND);
-    glDisable(GL_POINT_SMOOTH);
-    glPointSize(1.0f);
 }
 
 Image readPixels(int width, int height) {

@@ -7,8 +7,8 @@
 /// - `src/render/offscreen_egl.cpp`: an EGL context without a window (libEGL + libOpenGL) on Mesa's
 ///   surfaceless platform, or else on the first EGL device, drawing into a framebuffer object, in
 ///   `clothlab-render-egl`.
-/// Both give a compatibility-profile context (the fixed-function renderer and ImGui's OpenGL2 backend
-/// need it) with RGBA colour, 24-bit depth and 8-bit stencil; `./lab` picks the program (docs/render.md).
+/// Both give an OpenGL 3.3 core-profile context (what the renderer and its ImGui backend,
+/// render/imgui_gl.h, are written for) with RGBA colour, 24-bit depth and 8-bit stencil; `./lab` picks the program (docs/render.md).
 #pragma once
 #include <memory>
 #include <stdexcept>
@@ -25,7 +25,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// A compatibility-profile OpenGL context rendering into an RGBA buffer with a 24-bit depth buffer.
+/// An OpenGL 3.3 core-profile context rendering into an RGBA buffer with a 24-bit depth buffer.
 class OffscreenContext {
 public:
     /// Creates the context and makes it current.

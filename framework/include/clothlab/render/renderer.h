@@ -1,12 +1,15 @@
 /// @file renderer.h
 /// @brief The OpenGL renderer: cloth surface, spring/constraint overlay, particles, colliders, ground grid.
 ///
-/// Draws into whatever OpenGL context is current (an offscreen one, offscreen.h, or a GLFW window) with the
-/// fixed-function pipeline of OpenGL 1.x/2.x (compatibility profile), which both provide. This code is
-/// compiled once and linked into both programs; it links no GL library itself.
+/// Draws into whatever OpenGL context is current (an offscreen one, offscreen.h, or a GLFW window):
+/// OpenGL 3.3 core profile, with one shader program and vertex buffer objects; the browser build
+/// compiles the same source for WebGL2 (OpenGL ES 3.0, GLSL ES 3.00; the switch is in
+/// framework/src/render/gl.h). This code is compiled once and linked into every program; it links no
+/// GL library itself.
 #pragma once
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,18 +18,6 @@
 #include "clothlab/render/image.h"
 
 namespace clothlab {
-
-/// Triangles with optional per-vertex normals, as OpenGL vertex arrays take them.
-struct TriangleList {
-    std::vector<float> xyz;        ///< positions, 3 floats per vertex, m
-    std::vector<float> nrm;        ///< per-vertex normals, 3 floats per vertex (empty: none, e.g. unlit)
-    std::vector<unsigned> idx;     ///< 3 vertex indices per triangle
-};
-
-/// Draws a triangle list in one call (glDrawElements on vertex arrays) with the current GL state
-/// (material, lighting, colour, matrices). Cloth, shadows and colliders all go through it.
-/// @param t  the triangles
-void drawTriangleList(const TriangleList& t);
 
 /// What to draw and how.
 struct RenderOptions {
@@ -55,17 +46,26 @@ struct Viewport {
 
 /// Wall time of one pass of Renderer::draw(), summed over the frames since Renderer::resetTimes().
 struct RenderPassTime {
-    const char* name;   ///< "background", "ground and grid", "shadow", "colliders", "cloth", "edges", "particles and planes"
+    const char* name;   ///< "background", "ground and grid", "shadow", "cloth", "colliders", "edges", "particles and planes" (in this order)
     double ms = 0.0;    ///< wall time, milliseconds, summed
     double cpu_ms = 0.0;  ///< CPU time of every thread (the GL's too) by the clock given to setTiming(), ms, summed
 };
 
-/// Draws DrawData with a camera. Holds the few GL objects it creates (the cloth texture),
-/// so use one Renderer per GL context.
+/// Draws DrawData with a camera. Holds the GL objects it creates at its first draw (the shader
+/// program, vertex arrays and buffers, the cloth texture), so use one Renderer per GL context; they
+/// are not deleted with it (the context may be gone by then).
 class Renderer {
 public:
+    /// A renderer without GL objects yet (they are made in the context current at the first draw()).
+    Renderer();
+    ~Renderer();
+    /// Moves the GL objects' handles to this one.
+    Renderer(Renderer&&) noexcept;
+    /// Moves the GL objects' handles to this one.
+    Renderer& operator=(Renderer&&) noexcept;
+
     /// Renders one frame into the current context's viewport of size width x height:
-    /// background, ground grid and the cloth's shadow, colliders, cloth surface, edges, particles. Ends
+    /// background, ground grid and the cloth's shadow, cloth surface, colliders, edges, particles. Ends
     /// with glFlush(), not glFinish(): the GL may still be drawing when it returns (reading the pixels
     /// waits for it), so the caller can step the simulation meanwhile (llvmpipe draws on its own threads).
     /// @param d              what to draw
@@ -116,10 +116,8 @@ private:
     double lap_ = 0.0;            ///< the time of the last lap, s (steady clock)
     double lapCpu_ = 0.0;         ///< the CPU time then, s
     std::function<double()> cpu_; ///< setTiming()
-    unsigned texture_ = 0;        ///< checker texture of the cloth (0: not created yet)
-    TriangleList scratch_;        ///< the cloth or its shadow, rebuilt every frame
-    std::vector<float> lines_;    ///< scratch: line or point vertices, 3 floats each
-    std::vector<float> colours_;  ///< scratch: a colour per line vertex, RGB
+    struct Gpu;                   ///< the GL objects (program, vertex arrays, buffers, texture) and scratch arrays
+    std::unique_ptr<Gpu> gpu_;    ///< made at the first draw()
     Vec3 right_{1, 0, 0};         ///< camera right axis (for markers facing the camera)
     Vec3 up_{0, 1, 0};            ///< camera up axis
 };
