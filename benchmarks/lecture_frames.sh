@@ -9,17 +9,22 @@
 #     frame; a step that outlasts it is paid back by frames without steps): the wall time per frame and
 #     how fast the simulation then runs against real time (1 = real time).
 # Then two 64 x 64 cloths side by side, the same way (docs/performance.md).
-#   bash benchmarks/lecture_frames.sh [BUILD_DIR] [FRAMES]     (about 4 minutes on an idle machine)
+#   bash benchmarks/lecture_frames.sh [BUILD_DIR] [FRAMES] [--set KEY=VALUE ...]   (about 4 minutes on an idle machine)
+# The --set options go to every run, e.g. --set solver.kernel=batched: the lecturer's copy with the
+# batched sweeps (solutions/kernels/, not in the student copy; mass-spring scenes ignore the key).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build} frames=${2:-90}
+shift $(($# < 2 ? $# : 2))
+extra=("$@")
 exe=$build/bin/clothlab-render
 [[ -x $exe ]] || exe=$build/bin/clothlab-render-egl
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-echo "load: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores), $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u '+%Y-%m-%d %H:%M UTC')"
+echo "load: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores), $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u '+%Y-%m-%d %H:%M UTC')${extra[*]:+, ${extra[*]}}"
 printf '%-20s | %-32s | %-30s\n' "" "real time: wall, CPU per frame" "the app's budget: wall, x real time"
 row() {  # row NAME ARGS...: one line of the table
   local name=$1 full app rt; shift
+  set -- "$@" "${extra[@]}"
   full=$("$exe" gui "$@" --display-fps 30 --screenshot "$tmp/f.png" --frames "$frames" 2>&1 | grep 'ms per frame')
   app=$("$exe" gui "$@" --display-fps 30 --app-budget --screenshot "$tmp/f.png" --status "$tmp/s.json" --frames "$frames" 2>&1 | grep 'ms per frame')
   rt=$(jq -r '.realtime' "$tmp/s.json")
