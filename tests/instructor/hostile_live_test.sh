@@ -20,6 +20,7 @@
 # Defences this test does not switch off (attacks.tsv, README "Every attack proven live"):
 #   -                          a robustness case, aimed at no defence (a crash, the benign files)
 #   landlock, container-seccomp, uid   container mode's own: grade.container_mode_defences_are_load_bearing
+#   pid                        bubblewrap's PID namespace, with kill_other_runs: grade.pid_namespace_is_load_bearing
 #   memory, file-size, processes       the shared machine's memory, disk or process table would pay: named, not run
 #   names                      two students' file names (--class): grade.class_gradebook grades both
 # With --plant-dead, a copy of defines_other_stage whose stage-04 functions all gained a parameter (a

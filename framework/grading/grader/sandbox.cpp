@@ -42,7 +42,10 @@ namespace grade {
 namespace {
 
 Confinement g_confinement = Confinement::bubblewrap;
-constexpr uid_t kNobody = 65534;
+/// The user bubblewrap runs the programs as when the grader is root: nobody (test tool only, `pid`
+/// off: a user of the test's own, so that what an attack kills without the PID namespace is this
+/// test's runs, never another program's of user nobody).
+uid_t bubblewrapUser() { return weakened("pid") ? 64198 : 65534; }
 
 /// Calls fn(path, stat) for each entry of `dir` (or of its whole tree), never following a link.
 template <class Fn> void forEachEntry(const fs::path& dir, bool recursive, Fn fn) {
@@ -89,8 +92,9 @@ std::vector<std::string> bwrapArgs(const SandboxRun& run) {
     std::vector<std::string> a = {"bwrap", "--die-with-parent", "--new-session", "--hostname", "grader", "--clearenv",
                                   "--setenv", "PATH", "/usr/bin", "--setenv", "HOME", "/tmp", "--ro-bind", "/usr", "/usr"};
     for (const auto& [name, value] : run.env) a.insert(a.end(), {"--setenv", name, path(value)});
-    if (root) a.insert(a.begin() + 1, {"--unshare-ipc", "--unshare-pid", "--unshare-uts", "--unshare-cgroup-try"});
+    if (root) a.insert(a.begin() + 1, {"--unshare-ipc", "--unshare-uts", "--unshare-cgroup-try"});
     else a.insert(a.begin() + 1, {"--unshare-all", "--cap-drop", "ALL"});
+    if (root && !weakened("pid")) a.insert(a.begin() + 1, "--unshare-pid");  // test tool only: the machine's processes
     if (!weakened("network")) a.insert(a.begin() + 1, "--unshare-net");  // test tool only: the machine's network
     else if (!root) a.push_back("--share-net");  // after --unshare-all
     if (host) a.insert(a.end(), {"--ro-bind", "/", "/", "--dev", "/dev", "--bind", "/tmp", "/tmp", "--bind", "/var/tmp", "/var/tmp"});
@@ -110,8 +114,8 @@ std::vector<std::string> bwrapArgs(const SandboxRun& run) {
         if (!host || m.writable) a.insert(a.end(), {m.writable ? "--bind" : "--ro-bind", m.host.string(), path(m.inside.string())});
     a.insert(a.end(), {"--chdir", path(run.workdir.string()), "--"});
     if (root && !weakened("nobody"))  // test tool only: the program runs as root (bubblewrap's own user)
-        a.insert(a.end(), {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "--no-new-privs", "--inh-caps=-all",
-                           "--bounding-set=-all", "--"});
+        a.insert(a.end(), {"/usr/bin/setpriv", "--reuid=" + std::to_string(bubblewrapUser()), "--regid=" + std::to_string(bubblewrapUser()),
+                           "--clear-groups", "--no-new-privs", "--inh-caps=-all", "--bounding-set=-all", "--"});
     for (const auto& arg : run.argv) a.push_back(path(arg));
     return a;
 }
@@ -472,7 +476,7 @@ void makeWritableForSandbox(const fs::path& dir) {
     fs::create_directories(dir);
     if (::geteuid() != 0) fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add);
     else if (g_confinement == Confinement::container && ::lchown(dir.c_str(), 0, 0) != 0) die(dir.string() + ": (folder): cannot make it root's");
-    else if (g_confinement != Confinement::container && ::chown(dir.c_str(), kNobody, kNobody) != 0) die(dir.string() + ": (folder): cannot hand it to user nobody");
+    else if (g_confinement != Confinement::container && ::chown(dir.c_str(), bubblewrapUser(), bubblewrapUser()) != 0) die(dir.string() + ": (folder): cannot hand it to user nobody");
 }
 
 RunOutcome runSandboxed(const SandboxRun& run) {
@@ -508,7 +512,7 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     if (container)
         for (const auto& m : run.mounts)
             if (m.writable && ::lchown(m.host.c_str(), user.uid, user.uid) != 0) die(m.host.string() + ": (folder): cannot hand it to the run's user");
-    const uid_t runner = container ? user.uid : ::geteuid() == 0 && bubblewrap ? kNobody : ::geteuid();
+    const uid_t runner = container ? user.uid : ::geteuid() == 0 && bubblewrap ? bubblewrapUser() : ::geteuid();
     // The limits (test tool only: without the one a red-team attack aims at, tests/instructor/hostile/README.md).
     const rlim_t unlimited = RLIM_INFINITY, cpu = weakened("time") ? unlimited : static_cast<rlim_t>(run.limits.cpu_seconds);
     const std::pair<int, rlim_t> limits[] = {

@@ -186,6 +186,7 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
             if (out.exit_code != 0 || !fs::exists(obj / (u.stem().string() + ".o"))) {
                 std::string log = std::regex_replace(readFile(r.log, 64u << 10), std::regex("/submission/"), "");
                 if (out.timed_out) log += "the compiler ran longer than " + std::to_string(r.timeout_seconds) + " s\n";
+                else if (out.exit_code > 128) log += "the compiler was ended by signal " + std::to_string(out.exit_code - 128) + "\n";
                 return json{{"status", Status::does_not_compile}, {"problem", firstLines(log, 12, "") + "\n"}};
             }
             objects.push_back(obj / (u.stem().string() + ".o"));
