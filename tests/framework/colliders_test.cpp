@@ -170,6 +170,35 @@ TEST(Colliders, MeshOf10kTrianglesIsFastAndExact) {
     EXPECT_LT(us, scanUs / 10) << "a query must not scan all triangles";
 }
 
+TEST(Colliders, MeshSearchFromANearbySurfacePointIsTheSameBitForBit) {
+    // closest(x, near), as the solver and the run checks call it with a particle's last closest point,
+    // must give closest(x) exactly: on the rotated box (ties at its edges and corners) and the scene's
+    // dummy, with hints near x, far from x, on another part of the surface, and NaN (none).
+    std::vector<TriangleMesh> meshes = {boxMesh(Vec3(0, 1, 0), Vec3(0.6, 0.1, 0.4), rotZ(20)),
+                                        boxMesh(Vec3(0, 0, 0), Vec3(1, 1, 1), Eigen::Matrix3d::Identity())};
+    meshes.push_back(loadObjMesh(std::string(CLOTHLAB_SOURCE_DIR) + "/scenes/meshes/mannequin.obj", "test", "mesh", false));
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (const TriangleMesh& m : meshes) {
+        const MeshShape shape(m);
+        const Vec3 lo = m.vertices.rowwise().minCoeff(), hi = m.vertices.rowwise().maxCoeff();
+        const Vec3 mid = (lo + hi) / 2, half = (hi - lo) / 2;
+        int same = 0;
+        for (int k = 0; k < 3000; ++k) {
+            const Vec3 x = mid + 1.3 * half.cwiseProduct(Vec3(u(rng), u(rng), u(rng)));
+            const SurfacePoint ref = shape.closest(x);
+            const Vec3 moved = x + 0.02 * half.norm() * Vec3(u(rng), u(rng), u(rng));
+            const Vec3 other = mid + 1.3 * half.cwiseProduct(Vec3(u(rng), u(rng), u(rng)));
+            for (const Vec3& near : {ref.q, shape.closest(moved).q, shape.closest(other).q, Vec3(Vec3::Constant(NAN))}) {
+                const SurfacePoint s = shape.closest(x, near);
+                ASSERT_TRUE(s.q == ref.q && s.n == ref.n && s.d == ref.d) << "at " << x.transpose() << ", near " << near.transpose();
+                ++same;
+            }
+        }
+        EXPECT_EQ(same, 12000);
+    }
+}
+
 // ---- no tunnelling -------------------------------------------------------------------------------------
 
 TEST(Colliders, FastParticleNeverEndsInside) {

@@ -119,6 +119,14 @@ MeshShape::MeshShape(TriangleMesh mesh) : mesh_(std::move(mesh)) {
     std::iota(order_.begin(), order_.end(), 0);
     nodes_.reserve(T / 2 + 1);
     build(0, static_cast<int>(T));
+    boxLo_.resize(3, static_cast<Eigen::Index>(T));
+    boxHi_.resize(3, static_cast<Eigen::Index>(T));
+    for (size_t k = 0; k < T; ++k) {
+        const auto& f = mesh_.triangles[static_cast<size_t>(order_[k])];
+        const Vec3 a = mesh_.vertices.col(f[0]), b = mesh_.vertices.col(f[1]), c = mesh_.vertices.col(f[2]);
+        boxLo_.col(static_cast<Eigen::Index>(k)) = a.cwiseMin(b).cwiseMin(c);
+        boxHi_.col(static_cast<Eigen::Index>(k)) = a.cwiseMax(b).cwiseMax(c);
+    }
 }
 
 int MeshShape::build(int first, int count) {
@@ -153,24 +161,33 @@ int MeshShape::build(int first, int count) {
     return id;
 }
 
-SurfacePoint MeshShape::closest(const Vec3& x) const {
-    double best = INFINITY;
+// The nearer child first, boxes and triangles farther than the best so far skipped: the first
+// triangle in this order at the least distance wins. A bound2 above that distance only skips boxes
+// and triangles that could not win, so every bound2 that finds a triangle finds the same one. (A box
+// is skipped only when it is farther by a relative 1e-9, so that rounding in a triangle's distance,
+// 1e-16 relative, cannot make a skipped triangle the winner.)
+bool MeshShape::search(const Vec3& x, double bound2, SurfacePoint* out) const {
+    constexpr double kMargin = 1.0 + 1e-9;
+    double best = bound2;
     Vec3 q = Vec3::Zero(), pseudo = Vec3::UnitY();
+    bool found = false;
     int stack[128];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
         const Node& node = nodes_[static_cast<size_t>(stack[--top])];
-        if (boxDistance2(x, node.lo, node.hi) >= best) continue;
+        if (boxDistance2(x, node.lo, node.hi) > kMargin * best) continue;
         if (node.left < 0) {
             for (int k = node.first; k < node.first + node.count; ++k) {
+                // a triangle is no nearer than its box
+                if (boxDistance2(x, boxLo_.col(k), boxHi_.col(k)) > kMargin * best) continue;
                 const int t = order_[static_cast<size_t>(k)];
                 const auto& f = mesh_.triangles[static_cast<size_t>(t)];
                 int feature = 6;
                 const Vec3 c = closestOnTriangle(x, mesh_.vertices.col(f[0]), mesh_.vertices.col(f[1]), mesh_.vertices.col(f[2]), &feature);
                 const double d2 = (x - c).squaredNorm();
                 if (d2 < best) {
-                    best = d2, q = c;
+                    best = d2, q = c, found = true;
                     pseudo = feature < 3 ? vertexNormal_.col(f[feature])
                              : feature < 6 ? edgeNormal_.col(3 * t + feature - 3)
                                            : faceNormal_.col(t);
@@ -184,7 +201,23 @@ SurfacePoint MeshShape::closest(const Vec3& x) const {
         stack[top++] = aFirst ? node.right : node.left;  // the nearer child is searched first
         stack[top++] = aFirst ? node.left : node.right;
     }
-    return fromClosest(x, q, pseudo);
+    if (found) *out = fromClosest(x, q, pseudo);
+    return found;
+}
+
+SurfacePoint MeshShape::closest(const Vec3& x) const {
+    SurfacePoint s;
+    if (!search(x, INFINITY, &s)) s = fromClosest(x, Vec3::Zero(), Vec3::UnitY());  // no triangles
+    return s;
+}
+
+SurfacePoint MeshShape::closest(const Vec3& x, const Vec3& near) const {
+    // near is on the surface, so the closest point is at most |x − near| away; 1 nm more covers rounding
+    // (and if no triangle is found below the bound after all, the full search decides)
+    const double r = (x - near).norm() + 1e-9;
+    if (!std::isfinite(r)) return closest(x);  // no point given (NaN)
+    SurfacePoint s;
+    return search(x, r * r, &s) ? s : closest(x);
 }
 
 SurfacePoint colliderSurface(const Collider& c, const Vec3& x) {
@@ -202,6 +235,10 @@ SurfacePoint colliderSurface(const Collider& c, const Vec3& x) {
     return {};
 }
 
+SurfacePoint colliderSurface(const Collider& c, const Vec3& x, const Vec3& near) {
+    return c.type == Collider::Type::Mesh ? c.shape->closest(x, near) : colliderSurface(c, x);
+}
+
 double colliderDistance(const Collider& c, const Vec3& x) {
     switch (c.type) {
         case Collider::Type::Plane: return (x - c.point).dot(c.normal);
@@ -211,11 +248,17 @@ double colliderDistance(const Collider& c, const Vec3& x) {
 }
 
 bool generateSolidConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
-                             CollisionConstraint* out) {
-    SurfacePoint s = colliderSurface(collider, x);
+                             CollisionConstraint* out, Vec3* near) {
+    // Every query after the first is bounded by the closest point found before (the result is the same).
+    SurfacePoint s = near ? colliderSurface(collider, x, *near) : colliderSurface(collider, x);  // NaN: no point
+    struct Keep {  // hands the last closest point back through near, on every return
+        Vec3* near;
+        const SurfacePoint& s;
+        ~Keep() { if (near) *near = s.q; }
+    } keep{near, s};
     const double length = (p - x).norm();
     if (s.d < h) {  // starts within the thickness: only a prediction that stays within it
-        s = colliderSurface(collider, p);
+        s = colliderSurface(collider, p, s.q);  // (the closest point of x bounds the search)
         if (s.d >= h) return false;
     } else {  // sphere tracing along x -> p on d - h (d is 1-Lipschitz, so no step overshoots the surface)
         if (s.d - h >= length) return false;
@@ -225,11 +268,11 @@ bool generateSolidConstraint(int i, const Vec3& x, const Vec3& p, const Collider
         for (int k = 0; k < 100 && !hit; ++k) {
             t += (s.d - h) / length;
             if (t >= 1.0) break;
-            s = colliderSurface(collider, x + t * (p - x));
+            s = colliderSurface(collider, x + t * (p - x), s.q);
             hit = s.d - h <= tolerance;
         }
         if (!hit) {  // grazing paths converge slowly: p itself decides
-            s = colliderSurface(collider, p);
+            s = colliderSurface(collider, p, s.q);
             if (s.d >= h) return false;
         }
     }

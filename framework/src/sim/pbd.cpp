@@ -139,15 +139,19 @@ void PbdSimulation::generateCollisions(const Matrix3X& x, const Matrix3X& p) {
     auto timed = timer_.time(pass_.generate);
     contacts_.clear();
     const double h = scene_.solver.thickness;
+    const size_t nc = scene_.colliders.size();
+    // the closest surface point of each particle and solid collider at the last step (NaN: none yet)
+    if (nearest_.size() != nc * static_cast<size_t>(x.cols())) nearest_.assign(nc * static_cast<size_t>(x.cols()), Vec3::Constant(NAN));
     CollisionConstraint c;
     for (int i = 0; i < x.cols(); ++i) {
         if (P_.w[i] <= 0.0) continue;
-        for (const Collider& col : scene_.colliders) {
+        for (size_t k = 0; k < nc; ++k) {
+            const Collider& col = scene_.colliders[k];
             const Vec3 xi = x.col(i), pi = p.col(i);
             const bool hit =
                 col.type == Collider::Type::Plane    ? generatePlaneConstraint(i, xi, pi, planeCollider(col), h, subDt_, &c)  // exercise 6.1
                 : col.type == Collider::Type::Sphere ? generateSphereConstraint(i, xi, pi, sphereCollider(col), h, subDt_, &c)  // 6.2
-                                                     : generateSolidConstraint(i, xi, pi, col, h, subDt_, &c);  // sim/colliders.h
+                                                     : generateSolidConstraint(i, xi, pi, col, h, subDt_, &c, &nearest_[i * nc + k]);  // sim/colliders.h
             if (hit) contacts_.push_back(c);
         }
     }

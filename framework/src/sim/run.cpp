@@ -203,12 +203,27 @@ double energyScale(const Simulation& sim) {
     return std::max({std::abs(sim.energy()), mass * sim.scene().forces.gravity.norm() * extent, 1e-12});
 }
 
-double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth) {
+namespace {
+// colliderDistance(c, x), the same value; for a mesh with near (a surface point, NaN: none) bounding
+// the search, and near set to x's closest point; a point asked for twice in a row is looked up once.
+double distanceNear(const Collider& c, const Vec3& x, Vec3* near, Vec3* lastX, double* lastD) {
+    if (!near || c.type != Collider::Type::Mesh) return colliderDistance(c, x);
+    if (x == *lastX) return *lastD;
+    const SurfacePoint s = c.shape->closest(x, *near);
+    *near = s.q, *lastX = x, *lastD = s.d;
+    return s.d;
+}
+}  // namespace
+
+double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth, Vec3* near) {
     const double len = (b - a).norm();
-    double lowest = colliderDistance(c, a), t = 0.0;
+    Vec3 lastX = Vec3::Constant(NAN);  // the last point looked up and its distance (NaN: none)
+    double lastD = NAN;
+    const auto d = [&](const Vec3& x) { return distanceNear(c, x, near, &lastX, &lastD); };
+    double lowest = d(a), t = 0.0;
     while (lowest >= -depth && t < len) {
-        t = std::min(len, t + std::max({colliderDistance(c, a + (t / len) * (b - a)) + depth, 0.25 * depth, len / 64.0}));
-        lowest = std::min(lowest, colliderDistance(c, a + (t / len) * (b - a)));
+        t = std::min(len, t + std::max({d(a + (t / len) * (b - a)) + depth, 0.25 * depth, len / 64.0}));
+        lowest = std::min(lowest, d(a + (t / len) * (b - a)));
     }
     return lowest;
 }
@@ -260,8 +275,16 @@ void RunChecks::checkColliders(const Simulation& sim, long long step) {
     for (size_t k = 0; k < sc.colliders.size(); ++k) {
         const Collider& c = sc.colliders[k];
         const int ck = static_cast<int>(k);
+        if (nearest_.size() != sc.colliders.size()) nearest_.assign(sc.colliders.size(), Matrix3X());
+        Matrix3X& nearest = nearest_[k];
+        if (c.type == Collider::Type::Mesh && nearest.cols() != s.size()) nearest = Matrix3X::Constant(3, s.size(), NAN);
         for (int i = 0; i < s.size(); ++i) {
-            const double d = colliderDistance(c, s.x.col(i));
+            Vec3 nearX = Vec3::Constant(NAN), *near = c.type == Collider::Type::Mesh ? &nearX : nullptr;
+            if (near) nearX = nearest.col(i);
+            Vec3 lastX = Vec3::Constant(NAN);
+            double lastD = NAN;
+            const double d = distanceNear(c, s.x.col(i), near, &lastX, &lastD);
+            if (near) nearest.col(i) = nearX;
             if (h - d > worstPenetration_) worstPenetration_ = h - d, worstPenetrationStep_ = step;
             if (!watch_[k][static_cast<size_t>(i)]) continue;
             if (h - d > kPenetrationFactor * h) {
@@ -270,7 +293,7 @@ void RunChecks::checkColliders(const Simulation& sim, long long step) {
                 if (w.particle < 0) w.particle = i;
                 w.value = std::max(w.value, h - d);
             }
-            const double lowest = pathDistance(c, xOld_.col(i), s.x.col(i), deep);
+            const double lowest = pathDistance(c, xOld_.col(i), s.x.col(i), deep, near);
             if (lowest < -deep) {
                 RunWarning& w = warn(WarningKind::FellThrough, step, s.t, ck);
                 if (w.count++ == 0) w.particle = i;

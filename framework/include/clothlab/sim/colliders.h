@@ -35,6 +35,12 @@ public:
     explicit MeshShape(TriangleMesh mesh);
     /// Closest surface point, outward normal and signed distance of x (see SurfacePoint).
     SurfacePoint closest(const Vec3& x) const;
+    /// The same as closest(x), bit for bit, found faster when `near` is close to x: `near` is any point
+    /// of the surface (e.g. the closest point of a point nearby), so the closest point is at most
+    /// |x − near| away, and the search skips every box farther than that.
+    /// @param x     the point, m
+    /// @param near  a point of the mesh's surface, m
+    SurfacePoint closest(const Vec3& x, const Vec3& near) const;
     /// The mesh, as placed in the scene.
     const TriangleMesh& mesh() const { return mesh_; }
 
@@ -45,12 +51,15 @@ private:
         int first = 0, count = 0;   // leaf: triangles order_[first, first + count)
     };
     int build(int first, int count);
+    /// closest(x) among the triangles closer than sqrt(bound2); false (s untouched) if none is.
+    bool search(const Vec3& x, double bound2, SurfacePoint* s) const;
     TriangleMesh mesh_;
     Matrix3X faceNormal_;         // 3 x T
     Matrix3X edgeNormal_;         // 3 x 3T: pseudonormal of edge (f[k], f[k+1]) of triangle t at column 3t + k
     Matrix3X vertexNormal_;       // 3 x V: angle-weighted pseudonormals
     std::vector<int> order_;      // triangle indices, grouped by leaf
     std::vector<Node> nodes_;     // nodes_[0] is the root
+    Matrix3X boxLo_, boxHi_;      // 3 x T: bounding box of triangle order_[k] at column k
 };
 
 /// Closest point of triangle abc to x (Ericson, Real-Time Collision Detection, 5.1.5: the Voronoi
@@ -81,6 +90,13 @@ inline SphereCollider sphereCollider(const Collider& c) { return {c.point, c.rad
 /// @param x  a point, m
 /// @return   q_s, n_s and d(x)
 SurfacePoint colliderSurface(const Collider& c, const Vec3& x);
+/// colliderSurface(c, x), bit for bit, given a point `near` of the surface (for a mesh, the search
+/// starts with the bound |x − near|: MeshShape::closest(x, near)).
+/// @param c     the collider
+/// @param x     a point, m
+/// @param near  a point of c's surface, e.g. the closest point of a point near x, m
+/// @return      q_s, n_s and d(x)
+SurfacePoint colliderSurface(const Collider& c, const Vec3& x, const Vec3& near);
 
 /// Signed distance d(x) from the collider's surface, m: positive outside, zero on it, negative inside
 /// (colliderSurface(c, x).d). A particle with thickness h keeps d ≥ h; its penetration is max(0, h − d).
@@ -98,9 +114,13 @@ double colliderDistance(const Collider& c, const Vec3& x);
 /// - start = x, vnBefore = (p − x)·n_s/Δt, friction and restitution from the collider.
 /// @param i, x, p, h, dt, out  as in generatePlaneConstraint() (exercise 6.1)
 /// @param collider             a box, capsule or mesh
+/// @param near                 optional (speed only, the result is the same): in, a point of the
+///                             collider's surface near x, e.g. the last closest point of this particle
+///                             (bounds a mesh's search, see colliderSurface()); out, the closest surface
+///                             point of the last point looked at; null or NaN: none
 /// @return                     true if a constraint was generated
 bool generateSolidConstraint(int i, const Vec3& x, const Vec3& p, const Collider& collider, double h, double dt,
-                             CollisionConstraint* out);
+                             CollisionConstraint* out, Vec3* near = nullptr);
 
 /// The collider's surface as flat triangles for drawing: box 12, capsule a cylinder with two
 /// hemispheres of `segments` sides, mesh its own triangles; nothing for planes and spheres (drawn apart).

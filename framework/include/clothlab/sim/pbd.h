@@ -98,6 +98,7 @@ private:
     std::vector<double> linkLambda_;         ///< XPBD multipliers of the links
     std::vector<double> bendLambda_;         ///< XPBD multipliers of the stencils
     std::vector<CollisionConstraint> contacts_;  ///< collision constraints of the current step
+    std::vector<Vec3> nearest_;                  ///< closest point of particle i on solid collider k at the last step, at i·colliders + k (speeds up a mesh's search)
     double kDistance_ = 1.0, kBending_ = 1.0;    ///< per-iteration PBD stiffness k'
     Matrix3X rest_;                              ///< rest positions X (self-collision: which pairs are neighbours)
     std::vector<ParticlePair> selfPairs_;        ///< self-collision pairs of the current step (separation distance h)

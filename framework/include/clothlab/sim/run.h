@@ -157,7 +157,9 @@ double energyScale(const Simulation& sim);
 /// @param a      start of the path, m
 /// @param b      end of the path, m
 /// @param depth  the depth of interest D > 0, m
-double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth);
+/// @param near   optional (speed only, the result is the same): a point of a mesh collider's surface
+///               near a (MeshShape::closest(x, near)); becomes the closest point of the last point looked at
+double pathDistance(const Collider& c, const Vec3& a, const Vec3& b, double depth, Vec3* near = nullptr);
 
 /// A span of simulated time over which a run summarises every metric (`clothlab run --window T0,T1`):
 /// a quantity that oscillates (the curtain's max strain swings with its sway) is measured over a
@@ -246,6 +248,7 @@ private:
     void judgeEnergy(double later, double before);
 
     Matrix3X xOld_;                        ///< positions before the step, m
+    std::vector<Matrix3X> nearest_;        ///< per mesh collider: each particle's closest surface point at the last check (NaN: none; speeds up the search)
     std::vector<std::vector<char>> watch_; ///< per collider and particle: outside at t = 0, not fallen yet
     std::vector<std::vector<char>> penetrated_;  ///< per collider and particle: counted in the Penetration warning
     std::vector<RunWarning> warnings_;
