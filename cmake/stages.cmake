@@ -31,7 +31,14 @@ endfunction()
 # same compiler (C++ ABI, the inlined Eigen and standard library code), so with another compiler they
 # are ignored, with a warning.
 option(CLOTHLAB_REFERENCE_OBJECTS "use the reference objects of framework/reference/ (student copy)" ON)
+# The browser's build (cmake/web.cmake, em++) has its own: framework/reference/web/ (./lab release where
+# Emscripten is installed).
 set(_refobj_root "${PROJECT_SOURCE_DIR}/framework/reference")
+set(_refobj_name "framework/reference/")
+if(CLOTHLAB_WEB)
+  set(_refobj_root "${_refobj_root}/web")
+  set(_refobj_name "framework/reference/web/")
+endif()
 set(_refobj_ok OFF)
 if(CLOTHLAB_REFERENCE_OBJECTS AND EXISTS "${_refobj_root}/compiler.txt")
   file(STRINGS "${_refobj_root}/compiler.txt" _lines REGEX "^[a-z_]+=")
@@ -44,7 +51,7 @@ if(CLOTHLAB_REFERENCE_OBJECTS AND EXISTS "${_refobj_root}/compiler.txt")
   if(_ours STREQUAL _theirs)
     set(_refobj_ok ON)
   else()
-    message(WARNING "clothlab: framework/reference/ holds the reference stages compiled by ${_theirs} "
+    message(WARNING "clothlab: ${_refobj_name} holds the reference stages compiled by ${_theirs} "
       "on ${_refobj_system}; this build uses ${_ours}. Objects of another compiler do not link safely, so "
       "they are not used: --reference and grading with the reference for the other stages are unavailable. "
       "Build with that compiler (CXX=..., a fresh build folder), or ask for a copy released on your system.")
@@ -94,7 +101,7 @@ foreach(_dir IN LISTS _stage_dirs)
   set(_reference OFF)
   if(NOT _has_reference AND NN IN_LIST CLOTHLAB_REFERENCE_STAGES)
     message(WARNING "clothlab: --reference ${NN}: this copy has no reference for stage ${NN} (no solutions/${_dir}, "
-      "no usable framework/reference/${_dir}/*.o); stage ${NN} uses your code in exercises/${_dir}")
+      "no usable ${_refobj_name}${_dir}/*.o); stage ${NN} uses your code in exercises/${_dir}")
   endif()
   if(_has_reference AND ("all" IN_LIST CLOTHLAB_REFERENCE_STAGES OR NN IN_LIST CLOTHLAB_REFERENCE_STAGES))
     set(_reference ON)

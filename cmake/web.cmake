@@ -9,9 +9,13 @@
 # without cross-origin isolation has no shared memory for threads).
 # Header-only Debian packages (Eigen, nlohmann-json, stb, tinyobjloader) are used from /usr/include
 # through links in the build folder: /usr/include itself holds the host's C library, not Emscripten's.
+# CLOTHLAB_WEB_REFERENCE_ONLY (./lab release): only the stages' targets, for the browser's reference
+# objects of the student copy (framework/reference/web/), compiled exactly as the app's build compiles
+# them; no Dear ImGui, no app.
 set(CLOTHLAB_WEB ON)
+option(CLOTHLAB_WEB_REFERENCE_ONLY "only the stages (./lab release: the browser's reference objects)" OFF)
 set(CLOTHLAB_IMGUI_SOURCE "" CACHE PATH "Dear ImGui's sources (Debian's imgui source package: imgui.cpp, backends/)")
-if(NOT EXISTS "${CLOTHLAB_IMGUI_SOURCE}/imgui.cpp")
+if(NOT CLOTHLAB_WEB_REFERENCE_ONLY AND NOT EXISTS "${CLOTHLAB_IMGUI_SOURCE}/imgui.cpp")
   message(FATAL_ERROR "error: CLOTHLAB_IMGUI_SOURCE: no imgui.cpp in \"${CLOTHLAB_IMGUI_SOURCE}\" (./lab web fetches Debian's imgui source package)")
 endif()
 set(_host "${CMAKE_BINARY_DIR}/host-include")
@@ -30,6 +34,9 @@ include(cmake/stages.cmake)
 
 add_compile_options(-fexceptions)  # InputError, NotImplemented: Emscripten does not catch exceptions by default
 add_compile_definitions(CLOTHLAB_WEB=1 TINYOBJLOADER_USE_DOUBLE CLOTHLAB_REFERENCE_AVAILABLE=$<BOOL:${CLOTHLAB_REFERENCE_AVAILABLE}>)
+if(CLOTHLAB_WEB_REFERENCE_ONLY)
+  return()
+endif()
 configure_file(cmake/reference_stages.cpp.in "${CMAKE_BINARY_DIR}/generated/reference_stages.cpp" @ONLY)
 # The implementations Debian ships as libraries of the host (libtinyobjloader, libstb), from their headers.
 file(WRITE "${CMAKE_BINARY_DIR}/generated/header_libs.cpp" "#define TINYOBJLOADER_IMPLEMENTATION\n#include <tiny_obj_loader.h>\n"

@@ -6,7 +6,11 @@
 //   &set=KEY=VALUE (repeatable)    overrides a scene field, as ./lab gui --set
 //   &timing=1                      times the frame's parts (the status' app.timings_ms; benchmarks/web_step.sh)
 // Each frame it publishes the status: window.clothlab (an object) and the same as JSON in the element
-// with id clothlab-status (so chromium --headless --dump-dom reads it).
+// with id clothlab-status (so chromium --headless --dump-dom reads it). Its `probe` is the hook for
+// mouse tests (tests/web/page_run.py --mouse): the first run's middle particle (index particles / 2),
+// its position, whether it is pinned (inverse mass 0: a pin, a right-click's pin or the left button's
+// grab) and where it is drawn, in CSS pixels of the page (the left button there grabs it, the right
+// button toggles its pin, as in ./lab gui); `pinned` counts the first run's particles of inverse mass 0.
 #include <GLFW/glfw3.h>
 #include <emscripten.h>
 #include <imgui.h>
@@ -96,6 +100,17 @@ void publishStatus() {
         const Vec3 c = x.cols() ? Vec3(x.rowwise().mean()) : Vec3::Zero();
         j["centroid"] = {num(c.x()), num(c.y()), num(c.z())};
         j["particles"] = x.cols();
+        const VectorX& w = sim->state().w;
+        j["pinned"] = (w.array() == 0.0).count();
+        if (x.cols() > 0) {
+            const int k = static_cast<int>(x.cols() / 2);
+            const Viewport v = web.app->viewport(0);
+            const Vec3 p = web.app->camera().project(x.col(k), v.width, v.height);
+            const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;  // framebuffer pixels per CSS pixel
+            const double sx = scale.x > 0 ? scale.x : 1.0, sy = scale.y > 0 ? scale.y : 1.0;
+            j["probe"] = {{"index", k}, {"x", {num(x(0, k)), num(x(1, k)), num(x(2, k))}}, {"pinned", w[k] == 0.0},
+                          {"px", {num((v.x + p.x()) / sx), num((v.y + p.y()) / sy)}}};
+        }
     }
     if (cmp && !cmp->runs().empty() && !cmp->runs()[0].samples.empty()) {
         const CompareSample& s = cmp->runs()[0].samples.back();

@@ -18,7 +18,11 @@ root=$1; leak_check=$2; build_dir=$3; mode=${4:-full}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 
-CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/copy" >"$tmp/release.log" 2>&1 || { cat "$tmp/release.log"; fail "lab release"; }
+# fast (./lab test): without the browser's reference objects (em++ takes minutes; the web test
+# web.student_copy_page_runs_reference_objects checks them).
+web_opt=()
+[[ $mode == fast ]] && web_opt=(--no-web-reference-objects)
+CLOTHLAB_BUILD=$build_dir "$root/lab" release "$tmp/copy" "${web_opt[@]}" >"$tmp/release.log" 2>&1 || { cat "$tmp/release.log"; fail "lab release"; }
 grep -q "reference objects" "$tmp/release.log" || fail "lab release does not report the reference objects: $(tail -2 "$tmp/release.log")"
 [[ -d $tmp/copy/exercises && -f $tmp/copy/lab && -f $tmp/copy/README.md ]] || fail "copy lacks exercises/, lab or README.md"
 for d in solutions tests/instructor docs/instructor slides tests/framework tests/structure tests/docs tests/cli tests/grading tests/release tests/slides; do
@@ -36,6 +40,7 @@ mapfile -t keep < <(git -C "$root" show HEAD:tools/student_copy.txt | sed 's/#.*
 { git -C "$root" archive --format=tar HEAD -- "${keep[@]}" | tar -t | grep -v '/$' | sed 's|^README\.student\.md$|README.md|'; echo .github/workflows/grade.yml
   git -C "$root" ls-tree -r --name-only HEAD exercises | grep -E '^exercises/[0-9][0-9]_[^/]*/[^/]*\.cpp$' | sed 's|^exercises/|framework/stubs/|'
   echo framework/reference/compiler.txt
+  [[ -f $tmp/copy/framework/reference/web/compiler.txt ]] && echo framework/reference/web/compiler.txt
   (cd "$tmp/copy" && find framework/reference -name '*.o' 2>/dev/null); } | sort >"$tmp/want.txt"
 (cd "$tmp/copy" && find . -type f -o -type l) | sed 's|^\./||' | sort >"$tmp/got.txt"
 cmp -s "$tmp/want.txt" "$tmp/got.txt" \
@@ -70,6 +75,11 @@ for o in "$tmp"/copy/framework/reference/*/*.o; do
   objdump -h "$o" | grep -q -E '\.debug_|\.gnu\.lto_' && fail "${o#$tmp/copy/}: has debug or LTO sections: $(objdump -h "$o" | grep -o -E '\.(debug|gnu\.lto)_[a-z_.]*' | head -3 | tr '\n' ' ')"
   strings -a "$o" | grep -q -F "$root" && fail "${o#$tmp/copy/}: names a path of the instructor's tree: $(strings -a "$o" | grep -F "$root" | head -2)"
   strings -a "$o" | grep -q 'solutions/' && fail "${o#$tmp/copy/}: names solutions/: $(strings -a "$o" | grep 'solutions/' | head -2)"
+done
+# The browser's (em++, WebAssembly: objdump does not read them), where the release made them.
+for o in "$tmp"/copy/framework/reference/web/*/*.o; do
+  [[ -f $o ]] || continue
+  strings -a "$o" | grep -q -e "$root" -e 'solutions/' -e '^\.debug_' && fail "${o#$tmp/copy/}: names a path of the instructor's tree or has debug sections: $(strings -a "$o" | grep -e "$root" -e 'solutions/' -e '^\.debug_' | head -2)"
 done
 
 # A copy without the objects: none in it, and asking for the reference says so (before any build).

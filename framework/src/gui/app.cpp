@@ -370,12 +370,20 @@ void App::fitCamera(int width, int height) {
     const DrawData d = drawData(0);
     Vec3 lo, hi;
     drawBounds(d, lo, hi);
+    // The ground a cloth falls onto (a plane collider facing up, below it) is in view, and the ground is
+    // drawn there: else a cloth dropped from high up (pbd_bounce) falls out of the view, through a
+    // ground drawn just below its start.
+    double plane_y = std::nan("");
+    for (const Collider& c : d.colliders)
+        if (c.type == Collider::Type::Plane && c.normal.y() > 0.99 && c.point.y() < lo.y() && !(c.point.y() < plane_y))
+            plane_y = c.point.y();
+    if (std::isfinite(plane_y)) lo.y() = plane_y;
     // Leave room for the motion: a hanging cloth or chain swings below its pins.
     const double reach = (hi - lo).maxCoeff();
     bool pinned = false;
     for (int i = 0; i < d.w.size(); ++i) pinned = pinned || d.w[i] == 0;
     if (scene_.model != Model::Spring && pinned) lo.y() -= 0.5 * reach;
-    view_.ground_y = lo.y() - 0.05 * std::max(reach, 0.2);
+    view_.ground_y = std::isfinite(plane_y) ? plane_y : lo.y() - 0.05 * std::max(reach, 0.2);
     camera_set_ = true;
     if (compareMode()) {
         cam_ = sceneCamera(scene_, lo, hi, double(views_[0].width) / std::max(1, views_[0].height));
