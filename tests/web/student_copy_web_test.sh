@@ -25,7 +25,8 @@ for d in "$root"/solutions/[0-9][0-9]_*/; do
   compgen -G "$web/$d/*.o" >/dev/null || fail "no browser reference objects framework/reference/web/$d/*.o in the copy"
 done
 for o in "$web"/*/*.o; do
-  file -b "$o" | grep -q WebAssembly || fail "${o#$tmp/copy/}: not a WebAssembly object: $(file -b "$o")"
+  magic=$(head -c 4 "$o" | od -An -tx1 | tr -d ' \n')  # "\0asm": a WebAssembly module (no `file` on a minimal Debian)
+  [[ $magic == 0061736d ]] || fail "${o#$tmp/copy/}: not a WebAssembly object (it starts with the bytes $magic, not 00 61 73 6d)"
   strings -a "$o" | grep -q -e "$root" -e 'solutions/' -e '^\.debug_' && fail "${o#$tmp/copy/}: names the instructor's tree or has debug sections"
 done
 [[ -z $(find "$tmp/copy" -path '*/solutions*' -print -quit) ]] || fail "the copy holds a solutions path"
