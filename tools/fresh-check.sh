@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The fresh-machine check: `./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web] [--web]`.
+# The fresh-machine check: `./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web|ci] [--web]`.
 #
 # Builds a minimal Debian root with debootstrap (nothing in it but tools/base-packages.txt), clones
 # the *committed* tree (HEAD) into it, and runs the README's two commands there as root, the way a
@@ -7,6 +7,7 @@
 # wall time is printed as a table and appended to $WORK/results.tsv. With --web (or --only web) the
 # browser path follows: `./lab test --web` (it installs Emscripten and chromium, builds the page with
 # em++ and runs the browser tests), as a student who wants the app in a browser would.
+# --only ci runs what CI runs on a new machine: `bash .ci/run` (`./lab test`, then `./lab test --web --quick`).
 #
 # The commands run in a chroot whose root is a mount point of its own (bubblewrap, the grader's
 # sandbox, needs that: "Failed to make / slave" otherwise), with /proc, /sys and /dev from the host
@@ -31,15 +32,15 @@ while (($#)); do
   case $1 in
     --keep) keep=1; shift ;;
     --devcontainer) devcontainer=1; shift ;;
-    --only) [[ ${2:-} =~ ^(demo|test|web)$ ]] || die "fresh-check: --only: demo, test or web, not '${2:-}'"; only=("$2"); shift 2 ;;
+    --only) [[ ${2:-} =~ ^(demo|test|web|ci)$ ]] || die "fresh-check: --only: demo, test, web or ci, not '${2:-}'"; only=("$2"); shift 2 ;;
     --web) web=1; shift ;;
-    -*) die "fresh-check: unknown option $1 (usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web] [--web] [--devcontainer])" ;;
+    -*) die "fresh-check: unknown option $1 (usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web|ci] [--web] [--devcontainer])" ;;
     *) [[ -z $release ]] || die "fresh-check: one release at a time"; release=$1; shift ;;
   esac
 done
 case $release in
   bookworm|trixie) ;;
-  "") die "fresh-check: usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web] [--web] [--devcontainer]" ;;
+  "") die "fresh-check: usage: ./lab fresh-check bookworm|trixie [--keep] [--only demo|test|web|ci] [--web] [--devcontainer]" ;;
   *) die "fresh-check: release '$release': bookworm (Debian 12) or trixie (Debian 13)" ;;
 esac
 [[ $(id -u) -eq 0 ]] || die "fresh-check: needs root (debootstrap, chroot and mounts)"
@@ -149,16 +150,18 @@ results=()
 pretty=$(awk -F= '$1 == "PRETTY_NAME" { gsub(/"/, "", $2); print $2 }' "$target/etc/os-release")
 for c in "${only[@]}"; do
   log=$work/${target##*/}.$c.log
-  command=$c; [[ $c == web ]] && command="test --web"  # the browser tests (label web)
-  say "fresh-check $release: ./lab $command (log: $log)"
+  command="./lab $c"
+  [[ $c == web ]] && command="./lab test --web"  # the browser tests (label web)
+  [[ $c == ci ]] && command="bash .ci/run"       # what CI runs: ./lab test, then ./lab test --web --quick
+  say "fresh-check $release: $command (log: $log)"
   t0=$(date +%s)
   status=0
-  run_in_root "$log" "./lab $command" || status=$?
+  run_in_root "$log" "$command" || status=$?
   secs=$(($(date +%s) - t0))
   verdict=passed; ((status == 0)) || verdict=failed
   tail_line=$(grep -E 'tests passed|tests failed' "$log" | tail -1 || true)
-  results+=("$label	$pretty	./lab $command	$secs	$status	$verdict	${tail_line:-}")
-  printf '%s\t%s\t./lab %s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%F)" "$label" "$command" "$secs" "$status" "$verdict" "$commit" "${tail_line:-}" >>"$work/results.tsv"
+  results+=("$label	$pretty	$command	$secs	$status	$verdict	${tail_line:-}")
+  printf '%s\t%s\t./lab %s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%F)" "$label" "${command#./lab }" "$secs" "$status" "$verdict" "$commit" "${tail_line:-}" >>"$work/results.tsv"
   ((status == 0)) || tail -30 "$log" >&2
 done
 

@@ -5,6 +5,8 @@
 //   index.html?scene=NAME&steps=N  runs exactly N steps, then pauses (the browser test, tests/web/)
 //   &set=KEY=VALUE (repeatable)    overrides a scene field, as ./lab gui --set
 //   &timing=1                      times the frame's parts (the status' app.timings_ms; benchmarks/web_step.sh)
+// "Save PNG" and "Export CSV + PNG" write into Emscripten's in-memory files; the page offers each file as a
+// download (offerDownload). Where the panel drew its buttons is in the status (app.controls) for the tests.
 // Each frame it publishes the status: window.clothlab (an object) and the same as JSON in the element
 // with id clothlab-status (so chromium --headless --dump-dom reads it). Its `probe` is the hook for
 // mouse tests (tests/web/page_run.py --mouse): the first run's middle particle (index particles / 2),
@@ -131,6 +133,22 @@ void publishStatus() {
     }, text.c_str());
 }
 
+// A file the app wrote (in Emscripten's in-memory file system) offered as a download named after its
+// path ("clothlab_compare_1/compare.csv" -> clothlab_compare_1_compare.csv); window.clothlab_downloads
+// lists the names offered (tests/web/page_run.py --controls).
+void offerDownload(const std::string& path) {
+    EM_ASM({
+        const path = UTF8ToString($0);
+        const a = document.createElement('a');
+        a.href = URL.createObjectURL(new Blob([FS.readFile(path)]));
+        a.download = (path.startsWith('./') ? path.substring(2) : path).split('/').join('_');
+        document.body.appendChild(a);
+        a.click();
+        a.remove();
+        (window.clothlab_downloads = window.clothlab_downloads || []).push(a.download);
+    }, path.c_str());
+}
+
 void frame() {
     const auto now = std::chrono::steady_clock::now();
     const double ms = 1e3 * std::chrono::duration<double>(now - web.last).count();
@@ -198,6 +216,7 @@ int main(int argc, char** argv) {
         o.play = web.stop_at < 0;
         o.sets = urlParameters(query, "set");          // ?set=cloth.nx=64: as ./lab gui --set
         o.timing = urlParameter(query, "timing") == "1";  // ?timing=1: the frame's parts in the status (app.timings_ms)
+        o.file_written = offerDownload;               // "Save PNG", "Export CSV + PNG": the browser downloads the file
         web.app = std::make_unique<App>(o);
     } catch (const InputError& e) {
         web.error = std::string("error: ") + e.what();

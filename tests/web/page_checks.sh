@@ -16,9 +16,14 @@
 #     ./lab gui --set), 20 steps: either every position finite after the 20 steps, or a message in the
 #     status (the page's, or a run's: "unstable at step N ...", shown in the panel); never a blank
 #     canvas, no console error.
+#   page_checks.sh controls WEBDIR CLOTHLAB SCENES_DIR TMP
+#     pbd_hanging playing 3 s, then the panel's buttons clicked where the page says it drew them and the
+#     keys pressed (page_run.py --controls): Pause stops the steps, Step and the key S step once each,
+#     space plays and pauses, Reset goes back to t = 0, the method combo switches to xpbd (which then
+#     plays, finite), "Save PNG" and "Export CSV + PNG" download a PNG of the view and the comparison's CSV.
 # With PLANT (environment) set the page or the run is broken first and the check that PLANT names must
 # fail (tests web.planted_*): PLANT=still runs the scenes paused (?steps=0: "moves" fails); PLANT=no-pointer
-# makes the canvas ignore the mouse (CSS pointer-events: none: "grab" fails).
+# makes the canvas ignore the mouse (CSS pointer-events: none: "grab" and "pause" fail).
 set -uo pipefail
 fail() { echo "FAIL: $*" >&2; exit 1; }
 mode=$1 web=$2 clothlab=$3 scenes=$4 tmp=$5 seconds=${6:-5}
@@ -142,5 +147,35 @@ LIST
     i=$((i + 1))
   done
   ;;
-*) fail "page_checks.sh: unknown mode $mode (scenes, mouse or sliders)" ;;
+controls)
+  mkdir -p "$tmp/downloads"
+  timeout 300 python3 "$here/page_run.py" --serve "$tmp/site" --seconds 3 --controls --downloads "$tmp/downloads" \
+    --screenshot "$tmp/page.png" "index.html?scene=pbd_hanging" >"$tmp/status.json" 2>"$tmp/page_run.log" || fail "page_run.py failed: $(tail -3 "$tmp/page_run.log")"
+  st=$(cat "$tmp/status.json")
+  common pbd_hanging "$st" "$tmp/page.png"
+  c() { jq -c ".controls.$1" <<<"$st"; }
+  is() { jq -e ".controls | $1" <<<"$st" >/dev/null; }
+  is '.playing.playing and .playing.step > 0' || fail "play: the scene does not play on opening: $(c playing)"
+  is '.paused.playing == false and .paused_later.step == .paused.step' \
+    || fail "pause: the Pause button did not stop the steps: after the click $(c paused), a second later $(c paused_later)"
+  is '.stepped.step == .paused_later.step + 1 and .stepped.playing == false' || fail "step: the Step button did not make exactly one step: $(c paused_later) -> $(c stepped)"
+  is '.key_s.step == .stepped.step + 1' || fail "key S: not one step: $(c stepped) -> $(c key_s)"
+  is '.key_space.playing and .key_space.step > .key_s.step and .key_space_again.playing == false' \
+    || fail "key space: play then pause: $(c key_s) -> $(c key_space) -> $(c key_space_again)"
+  is '.reset.t == 0 and .reset.step == 0 and .reset.message == ""' || fail "reset: not back at t = 0: $(c reset)"
+  is '.missing | length == 0' || fail "controls: the panel drew no $(jq -r '.controls.missing | join(", ")' <<<"$st") (status app.controls: $(jq -c '.app.controls | keys' <<<"$st"))"
+  is '.method.method == "xpbd" and .method_plays.method == "xpbd" and .method_plays.playing and .method_plays.step > .method.step and .method_plays.finite' \
+    || fail "method: the combo's xpbd did not switch the run or it does not play finite: $(c method) -> $(c method_plays)"
+  for f in clothlab_view_1.png clothlab_compare_1_compare.csv; do
+    is ".downloads | index(\"$f\") != null" || fail "download: the page did not offer $f (offered: $(c downloads))"
+    [[ -s $tmp/downloads/$f ]] || fail "download: chromium saved no $f in $tmp/downloads (saved: $(c saved))"
+  done
+  [[ $(head -c 8 "$tmp/downloads/clothlab_view_1.png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] \
+    || fail "save png: clothlab_view_1.png is not a PNG file"
+  drawn_ok "$tmp/downloads/clothlab_view_1.png" || fail "save png: the saved view is blank"
+  csv=$tmp/downloads/clothlab_compare_1_compare.csv
+  head -1 "$csv" | grep -q 'method' && grep -q 'xpbd' "$csv" || fail "export: $csv has no header with method or no row of xpbd: $(head -3 "$csv")"
+  echo "ok: pbd_hanging: Pause held step $(jq .controls.paused.step <<<"$st") for 1 s, Step and S one step each, space played and paused, Reset to t = 0, the method combo switched to xpbd (plays, finite), downloaded clothlab_view_1.png and $(($(wc -l <"$csv") - 1)) rows of compare.csv"
+  ;;
+*) fail "page_checks.sh: unknown mode $mode (scenes, mouse, sliders or controls)" ;;
 esac

@@ -2,6 +2,7 @@
 """Runs pages in headless chromium and prints each page's clothlab status (window.clothlab) as JSON.
 
     page_run.py URL... [--serve DIR] [--seconds S] [--until-done] [--screenshot FILE.png] [--mouse]
+                [--controls --downloads DIR]
 
 Chromium is driven over its DevTools protocol on a pipe (--remote-debugging-pipe: file descriptors 3
 and 4, messages ending in NUL), so only the standard library is needed. It loads each URL in turn in
@@ -16,6 +17,11 @@ run's middle particle and where it is drawn, framework/app/web_main.cpp): the le
 it and dragged 120 CSS pixels up, released, then a right click on it (the pin toggle); the status gets
 `mouse`: the probe and the pinned count before, during the drag, after the release and after the
 right click (Input.dispatchMouseEvent: real DOM events on the canvas).
+--controls (after the page has played S seconds): the panel's buttons and keys as a user presses them,
+clicked where the status says the panel drew them (app.controls): Pause, a second of nothing, Step, the
+keys S and space (twice), Reset, the method combo and its "xpbd", Play, "Save PNG" and "Export CSV + PNG";
+the status gets `controls`: playing, step, t, the method, finite, message after each, and the downloads
+(window.clothlab_downloads and the files chromium saved into --downloads DIR).
 Chromium renders with SwiftShader (no GPU): --use-angle=swiftshader --enable-unsafe-swiftshader.
 """
 import argparse, base64, json, os, subprocess, sys, tempfile, time
@@ -27,6 +33,8 @@ ap.add_argument("--seconds", type=float, default=10.0)
 ap.add_argument("--until-done", action="store_true")
 ap.add_argument("--screenshot")
 ap.add_argument("--mouse", action="store_true")
+ap.add_argument("--controls", action="store_true")
+ap.add_argument("--downloads")
 args = ap.parse_args()
 
 server = None
@@ -147,6 +155,66 @@ def drive_mouse(s, status):
     return out
 
 
+def key(s, text, code, vk):
+    for kind in ("keyDown", "keyUp"):
+        call("Input.dispatchKeyEvent", {"type": kind, "key": text, "code": code, "windowsVirtualKeyCode": vk,
+                                        "text": text if kind == "keyDown" else ""}, session=s)
+    time.sleep(0.4)
+
+
+def controls_of(st):
+    app = (st or {}).get("app") or {}
+    runs = app.get("runs") or [{}]
+    return {"playing": app.get("playing"), "step": (st or {}).get("step"), "t": (st or {}).get("t"),
+            "method": runs[0].get("method"), "finite": (st or {}).get("finite"), "message": (st or {}).get("message")}
+
+
+def click(s, name):
+    """Clicks the panel's control NAME where the last status says it was drawn; False when it is not there."""
+    r = (((read_status(s) or {}).get("app") or {}).get("controls") or {}).get(name)
+    if not r:
+        return False
+    x, y = r[0] + r[2] / 2, r[1] + r[3] / 2
+    mouse(s, "mouseMoved", x, y)
+    mouse(s, "mousePressed", x, y, "left", 1)
+    mouse(s, "mouseReleased", x, y, "left", 0)
+    return True
+
+
+def drive_controls(s, status):
+    out = {"playing": controls_of(status), "missing": []}
+
+    def press(name, wait=0.5):
+        if not click(s, name):
+            out["missing"].append(name)
+        time.sleep(wait)
+        return controls_of(read_status(s))
+
+    out["paused"] = press("play")
+    time.sleep(1.0)
+    out["paused_later"] = controls_of(read_status(s))
+    out["stepped"] = press("step")
+    key(s, "s", "KeyS", 83)
+    out["key_s"] = controls_of(read_status(s))
+    key(s, " ", "Space", 32)
+    time.sleep(1.0)
+    out["key_space"] = controls_of(read_status(s))
+    key(s, " ", "Space", 32)
+    out["key_space_again"] = controls_of(read_status(s))
+    out["reset"] = press("reset")
+    press("method")
+    out["method"] = press("method=xpbd")
+    out["method_plays"] = press("play", 1.5)
+    press("save_png", 1.0)
+    press("export", 1.0)
+    r = call("Runtime.evaluate", {"expression": "JSON.stringify(window.clothlab_downloads || [])", "returnByValue": True}, session=s)
+    out["downloads"] = json.loads(r.get("result", {}).get("value") or "[]")
+    if args.downloads:
+        time.sleep(1.0)
+        out["saved"] = sorted(f for f in os.listdir(args.downloads) if not f.endswith(".crdownload"))
+    return out
+
+
 results = []
 try:
     target = call("Target.createTarget", {"url": "about:blank"})["targetId"]
@@ -154,6 +222,8 @@ try:
     call("Runtime.enable", session=s)
     call("Log.enable", session=s)
     call("Page.enable", session=s)
+    if args.downloads:
+        call("Browser.setDownloadBehavior", {"behavior": "allow", "downloadPath": os.path.abspath(args.downloads)})
     for i, url in enumerate(args.urls):
         errors = []
         status = {}
@@ -168,6 +238,9 @@ try:
         if args.mouse:
             status["mouse"] = drive_mouse(s, status)
             status.update({k: v for k, v in (read_status(s) or {}).items() if k not in ("mouse",)})
+        if args.controls:
+            status["controls"] = drive_controls(s, status)
+            status.update({k: v for k, v in (read_status(s) or {}).items() if k not in ("controls",)})
         if args.screenshot:
             shot = args.screenshot if len(args.urls) == 1 else args.screenshot[:-4] + "-%d.png" % i
             png = call("Page.captureScreenshot", {"format": "png"}, session=s)["data"]

@@ -533,6 +533,7 @@ void App::frame(int width, int height) {
         try {
             writePng(name, readPixels(width, height));
             status_ = "saved " + (std::filesystem::current_path() / name).string();
+            wrote(name);
         } catch (const std::exception& e) {
             message_ = std::string("error: ") + e.what();
         }
@@ -572,6 +573,7 @@ void App::panel(int /*width*/, int height) {
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, height * scale - 16), ImGuiCond_Always);
     ImGui::Begin(kRunWindow, nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBackground);
+    controls_.clear();
     ImGui::PushItemWidth(190);
     if (!message_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kRed);
@@ -625,25 +627,38 @@ void App::panelScene() {
         ImGui::TextWrapped("Look at: %s", scene_.view.look.c_str());
         ImGui::PopStyleColor();
     }
-    if (!compareMode() && ImGui::BeginCombo("method", methodName(variants_.front().solver.method))) {
-        for (Method m : allMethods())
-            if (ImGui::Selectable(methodName(m), m == variants_.front().solver.method)) {
-                variants_.front().solver.method = m;
-                variants_.front().label = methodName(m);
-                rebuild(true);
+    if (!compareMode()) {
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        const float w = ImGui::CalcItemWidth();
+        const bool open = ImGui::BeginCombo("method", methodName(variants_.front().solver.method));
+        controls_["method"] = Viewport{static_cast<int>(at.x), static_cast<int>(at.y), static_cast<int>(w), static_cast<int>(ImGui::GetFrameHeight())};
+        if (open) {
+            for (Method m : allMethods()) {
+                if (ImGui::Selectable(methodName(m), m == variants_.front().solver.method)) {
+                    variants_.front().solver.method = m;
+                    variants_.front().label = methodName(m);
+                    rebuild(true);
+                }
+                rememberControl(std::string("method=") + methodName(m));
             }
-        ImGui::EndCombo();
+            ImGui::EndCombo();
+        }
     }
     if (ImGui::Button(playing_ ? "Pause" : "Play")) playing_ = !playing_;
+    rememberControl("play");
     ImGui::SameLine();
     if (ImGui::Button("Step")) stepOnce();
+    rememberControl("step");
     ImGui::SameLine();
     if (ImGui::Button("Reset")) rebuild(false);
+    rememberControl("reset");
     ImGui::SameLine();
     ImGui::Text("t = %.3f s", cmp_ ? cmp_->time() : 0.0);
     if (ImGui::Button("Save PNG")) save_view_ = true;
+    rememberControl("save_png");
     ImGui::SameLine();
     if (ImGui::Button("Export CSV + PNG")) exportFigures(options_.out_dir + "/clothlab_compare_" + std::to_string(++exported_));
+    rememberControl("export");
     if (variants_.size() < static_cast<size_t>(kCompareMax)) {
         ImGui::SameLine();
         if (ImGui::Button(compareMode() ? "+ run" : "+ compare")) {
@@ -651,6 +666,7 @@ void App::panelScene() {
             camera_set_ = false;
             rebuild(false);
         }
+        rememberControl("compare");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Run a copy of this scene side by side, started, paused and reset together");
     }
     if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
@@ -980,6 +996,16 @@ void App::drawLabels() {
     }
 }
 
+// The last item's rectangle (ImGui's screen coordinates: CSS pixels in a browser) under NAME, for the status.
+void App::rememberControl(const std::string& name) {
+    const ImVec2 p = ImGui::GetItemRectMin(), q = ImGui::GetItemRectMax();
+    controls_[name] = Viewport{static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(q.x - p.x), static_cast<int>(q.y - p.y)};
+}
+
+void App::wrote(const std::string& path) {
+    if (options_.file_written) options_.file_written(path);
+}
+
 std::string App::exportFigures(const std::string& dir) {
     if (!cmp_) return "";
     try {
@@ -987,6 +1013,8 @@ std::string App::exportFigures(const std::string& dir) {
         writeCompareCsv(dir + "/compare.csv", *cmp_);
         const std::string png = plotCompare(dir, *cmp_, std::filesystem::path(scene_path_).filename().string());
         status_ = "wrote " + dir + "/compare.csv" + (png.empty() ? " (no PNG: gnuplot missing)" : " and compare.png");
+        wrote(dir + "/compare.csv");
+        if (!png.empty()) wrote(png);
     } catch (const std::exception& e) {
         message_ = std::string("error: ") + e.what();
     }
@@ -1025,6 +1053,8 @@ std::string App::statusJson() const {
         j["runs"].push_back(x);
     }
     j["panel"] = {{"cut_text", clippedText(kRunWindow)}, {"scrolls", panel_scrolls_}};
+    j["controls"] = json::object();
+    for (const auto& [name, r] : controls_) j["controls"][name] = {r.x, r.y, r.width, r.height};
     if (compareMode())
         j["plots"] = {{"rect", {plots_rect_.x, plots_rect_.y, plots_rect_.width, plots_rect_.height}}, {"cut_text", clippedText(kPlotWindow)}};
     const double n = std::max(1, timings_.frames);

@@ -47,6 +47,9 @@ struct AppOptions {
     bool timing = false;      ///< time the frame's parts (App::timings(); the renderer's passes with glFinish() between them)
     std::function<double()> cpu_clock;  ///< with timing: the process's CPU time, s, for the CPU columns of AppTimings
     std::string out_dir = "."; ///< where "Export CSV + PNG" writes its folders clothlab_compare_N
+    /// Called with the path of each file the app wrote ("Save PNG", "Export CSV + PNG"); the browser's
+    /// page (framework/app/web_main.cpp) offers it as a download. Empty: nothing more is done.
+    std::function<void(const std::string& path)> file_written;
     /// Wall time a frame may spend stepping, s; 0: what a 30 fps frame leaves after the rest of the last
     /// frames (at least 5 ms, at most 40 ms). A measurement of the cost of real time sets it high.
     double step_budget = 0.0;
@@ -151,6 +154,8 @@ private:
     void drawLabels();
     bool compareMode() const { return variants_.size() > 1; }
     int runAt(double px, double py) const;
+    void rememberControl(const std::string& name);
+    void wrote(const std::string& path);
     DrawData drawData(size_t i) const;
     std::string runLabel(const CompareVariant& v) const;
 
@@ -166,6 +171,7 @@ private:
     std::vector<Viewport> views_;        ///< where each run is drawn
     Viewport plots_rect_;                ///< compare mode: the plots window below the views
     std::vector<std::pair<Viewport, std::string>> label_boxes_;  ///< each view's label as drawn (status)
+    std::map<std::string, Viewport> controls_;  ///< where the panel drew its buttons this frame (status: tests click them)
     std::string message_;                ///< error or "not implemented" line
     std::string stub_hit_;               ///< the last NotImplemented message
     bool playing_ = true;                ///< running
