@@ -20,7 +20,8 @@
 #     pbd_hanging playing 3 s, then the panel's buttons clicked where the page says it drew them and the
 #     keys pressed (page_run.py --controls): Pause stops the steps, Step and the key S step once each,
 #     space plays and pauses, Reset goes back to t = 0, the method combo switches to xpbd (which then
-#     plays, finite), "Save PNG" and "Export CSV + PNG" download a PNG of the view and the comparison's CSV.
+#     plays, finite), "Save PNG" and "Export CSV + PNG" download a PNG of the view and the comparison's CSV,
+#     "+ compare" runs a copy side by side (two runs, each stepping, each labelled in its view).
 # With PLANT (environment) set the page or the run is broken first and the check that PLANT names must
 # fail (tests web.planted_*): PLANT=still runs the scenes paused (?steps=0: "moves" fails); PLANT=no-pointer
 # makes the canvas ignore the mouse (CSS pointer-events: none: "grab" and "pause" fail).
@@ -175,7 +176,9 @@ controls)
   drawn_ok "$tmp/downloads/clothlab_view_1.png" || fail "save png: the saved view is blank"
   csv=$tmp/downloads/clothlab_compare_1_compare.csv
   head -1 "$csv" | grep -q 'method' && grep -q 'xpbd' "$csv" || fail "export: $csv has no header with method or no row of xpbd: $(head -3 "$csv")"
-  echo "ok: pbd_hanging: Pause held step $(jq .controls.paused.step <<<"$st") for 1 s, Step and S one step each, space played and paused, Reset to t = 0, the method combo switched to xpbd (plays, finite), downloaded clothlab_view_1.png and $(($(wc -l <"$csv") - 1)) rows of compare.csv"
+  is '.side_by_side.runs | length == 2 and all(.steps > 0 and (.label // "") != "")' \
+    || fail "side by side: \"+ compare\" did not give two labelled runs that step: $(c side_by_side)"
+  echo "ok: pbd_hanging: Pause held step $(jq .controls.paused.step <<<"$st") for 1 s, Step and S one step each, space played and paused, Reset to t = 0, the method combo switched to xpbd (plays, finite), downloaded clothlab_view_1.png and $(($(wc -l <"$csv") - 1)) rows of compare.csv, \"+ compare\" ran two labelled runs ($(jq -c '[.controls.side_by_side.runs[].label]' <<<"$st"))"
   ;;
 *) fail "page_checks.sh: unknown mode $mode (scenes, mouse, sliders or controls)" ;;
 esac

@@ -19,7 +19,8 @@ it and dragged 120 CSS pixels up, released, then a right click on it (the pin to
 right click (Input.dispatchMouseEvent: real DOM events on the canvas).
 --controls (after the page has played S seconds): the panel's buttons and keys as a user presses them,
 clicked where the status says the panel drew them (app.controls): Pause, a second of nothing, Step, the
-keys S and space (twice), Reset, the method combo and its "xpbd", Play, "Save PNG" and "Export CSV + PNG";
+keys S and space (twice), Reset, the method combo and its "xpbd", Play, "Save PNG", "Export CSV + PNG"
+and "+ compare";
 the status gets `controls`: playing, step, t, the method, finite, message after each, and the downloads
 (window.clothlab_downloads and the files chromium saved into --downloads DIR).
 Chromium renders with SwiftShader (no GPU): --use-angle=swiftshader --enable-unsafe-swiftshader.
@@ -166,7 +167,8 @@ def controls_of(st):
     app = (st or {}).get("app") or {}
     runs = app.get("runs") or [{}]
     return {"playing": app.get("playing"), "step": (st or {}).get("step"), "t": (st or {}).get("t"),
-            "method": runs[0].get("method"), "finite": (st or {}).get("finite"), "message": (st or {}).get("message")}
+            "method": runs[0].get("method"), "finite": (st or {}).get("finite"), "message": (st or {}).get("message"),
+            "runs": [{"steps": r.get("steps"), "label": r.get("label_text")} for r in runs]}
 
 
 def click(s, name):
@@ -207,6 +209,7 @@ def drive_controls(s, status):
     out["method_plays"] = press("play", 1.5)
     press("save_png", 1.0)
     press("export", 1.0)
+    out["side_by_side"] = press("compare", 2.0)
     r = call("Runtime.evaluate", {"expression": "JSON.stringify(window.clothlab_downloads || [])", "returnByValue": True}, session=s)
     out["downloads"] = json.loads(r.get("result", {}).get("value") or "[]")
     if args.downloads:
