@@ -217,6 +217,7 @@ int main(int argc, char** argv) {
         o.sets = urlParameters(query, "set");          // ?set=cloth.nx=64: as ./lab gui --set
         o.timing = urlParameter(query, "timing") == "1";  // ?timing=1: the frame's parts in the status (app.timings_ms)
         o.file_written = offerDownload;               // "Save PNG", "Export CSV + PNG": the browser downloads the file
+        o.platform_note = "one thread: a browser page runs without threads here (./lab gui uses every core)";
         web.app = std::make_unique<App>(o);
     } catch (const InputError& e) {
         web.error = std::string("error: ") + e.what();

@@ -176,6 +176,7 @@ controls)
   drawn_ok "$tmp/downloads/clothlab_view_1.png" || fail "save png: the saved view is blank"
   csv=$tmp/downloads/clothlab_compare_1_compare.csv
   head -1 "$csv" | grep -q 'method' && grep -q 'xpbd' "$csv" || fail "export: $csv has no header with method or no row of xpbd: $(head -3 "$csv")"
+  jq -e '.app.platform_note | test("one thread")' <<<"$st" >/dev/null || fail "threads: the panel does not say the page runs on one thread: $(jq -c .app.platform_note <<<"$st")"
   is '.side_by_side.runs | length == 2 and all(.steps > 0 and (.label // "") != "")' \
     || fail "side by side: \"+ compare\" did not give two labelled runs that step: $(c side_by_side)"
   echo "ok: pbd_hanging: Pause held step $(jq .controls.paused.step <<<"$st") for 1 s, Step and S one step each, space played and paused, Reset to t = 0, the method combo switched to xpbd (plays, finite), downloaded clothlab_view_1.png and $(($(wc -l <"$csv") - 1)) rows of compare.csv, \"+ compare\" ran two labelled runs ($(jq -c '[.controls.side_by_side.runs[].label]' <<<"$st"))"

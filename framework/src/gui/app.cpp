@@ -682,6 +682,7 @@ void App::panelScene() {
         const CompareRun& r = cmp_->runs().front();
         ImGui::Text("step %s", duration(r.samples.empty() ? NAN : r.samples.back().step_ms).c_str());
     }
+    if (!options_.platform_note.empty()) ImGui::TextWrapped("%s", options_.platform_note.c_str());
 }
 
 void App::panelRuns() {
@@ -1032,6 +1033,7 @@ std::string App::statusJson() const {
     j["realtime"] = std::min(realtime_, speed_);
     j["message"] = message_;
     j["compare"] = compareMode();
+    j["platform_note"] = options_.platform_note;
     if (cmp_) j["measure"] = {{"name", cmp_->measure().name}, {"unit", cmp_->measure().unit}};
     j["runs"] = json::array();
     for (size_t i = 0; cmp_ && i < cmp_->runs().size(); ++i) {

@@ -50,6 +50,9 @@ struct AppOptions {
     /// Called with the path of each file the app wrote ("Save PNG", "Export CSV + PNG"); the browser's
     /// page (framework/app/web_main.cpp) offers it as a download. Empty: nothing more is done.
     std::function<void(const std::string& path)> file_written;
+    /// One line the panel shows under the step time about where the app runs (the browser's page: one
+    /// thread); "" none. The status (App::statusJson()) has it as `platform_note`.
+    std::string platform_note;
     /// Wall time a frame may spend stepping, s; 0: what a 30 fps frame leaves after the rest of the last
     /// frames (at least 5 ms, at most 40 ms). A measurement of the cost of real time sets it high.
     double step_budget = 0.0;
