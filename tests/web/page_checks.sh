@@ -21,7 +21,8 @@
 #     keys pressed (page_run.py --controls): Pause stops the steps, Step and the key S step once each,
 #     space plays and pauses, Reset goes back to t = 0, the method combo switches to xpbd (which then
 #     plays, finite), "Save PNG" and "Export CSV + PNG" download a PNG of the view and the comparison's CSV,
-#     "+ compare" runs a copy side by side (two runs, each stepping, each labelled in its view).
+#     "+ compare" runs a copy side by side (two runs, each stepping, each labelled in its view) with the
+#     comparison's plots below the views (drawn, no text cut, samples of both runs).
 # With PLANT (environment) set the page or the run is broken first and the check that PLANT names must
 # fail (tests web.planted_*): PLANT=still runs the scenes paused (?steps=0: "moves" fails); PLANT=no-pointer
 # makes the canvas ignore the mouse (CSS pointer-events: none: "grab" and "pause" fail).
@@ -179,7 +180,9 @@ controls)
   jq -e '.app.platform_note | test("one thread")' <<<"$st" >/dev/null || fail "threads: the panel does not say the page runs on one thread: $(jq -c .app.platform_note <<<"$st")"
   is '.side_by_side.runs | length == 2 and all(.steps > 0 and (.label // "") != "")' \
     || fail "side by side: \"+ compare\" did not give two labelled runs that step: $(c side_by_side)"
-  echo "ok: pbd_hanging: Pause held step $(jq .controls.paused.step <<<"$st") for 1 s, Step and S one step each, space played and paused, Reset to t = 0, the method combo switched to xpbd (plays, finite), downloaded clothlab_view_1.png and $(($(wc -l <"$csv") - 1)) rows of compare.csv, \"+ compare\" ran two labelled runs ($(jq -c '[.controls.side_by_side.runs[].label]' <<<"$st"))"
+  jq -e '.app.compare and .app.plots.rect[2] > 100 and .app.plots.rect[3] > 100 and (.app.plots.cut_text | length == 0) and all(.app.runs[]; .samples > 1)' <<<"$st" >/dev/null \
+    || fail "plots: side by side, the plots window is not drawn whole with the runs' samples: $(jq -c '{plots: .app.plots, samples: [.app.runs[].samples]}' <<<"$st")"
+  echo "ok: pbd_hanging: Pause held step $(jq .controls.paused.step <<<"$st") for 1 s, Step and S one step each, space played and paused, Reset to t = 0, the method combo switched to xpbd (plays, finite), downloaded clothlab_view_1.png and $(($(wc -l <"$csv") - 1)) rows of compare.csv, \"+ compare\" ran two labelled runs ($(jq -c '[.controls.side_by_side.runs[].label]' <<<"$st")) with their plots"
   ;;
 *) fail "page_checks.sh: unknown mode $mode (scenes, mouse, sliders or controls)" ;;
 esac
