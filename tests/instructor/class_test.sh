@@ -54,7 +54,7 @@ namespace { struct Forge { Forge() { std::system("echo forged"); } } forge; }
 CPP
 expect_row hostile_static "01 rejected" 01=0
 reference "$tmp/zip/frank-submission-main/exercises"
-(cd "$tmp/zip" && zip -qr "$class/zip_extra_folder.zip" frank-submission-main) || fail "zip"
+(cd "$tmp/zip" && zip -qr "$class/zip_extra_folder.Zip" frank-submission-main) || fail "zip"  # .Zip: any case is a zip
 expect_row zip_extra_folder ok
 mistake_names=()
 add_mistake() {  # add_mistake NN_dir NAME

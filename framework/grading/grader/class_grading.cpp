@@ -30,8 +30,8 @@ std::vector<Entry> listEntries(const fs::path& dir) {
         std::smatch m;
         if (file.empty() || file[0] == '.' || file == "__MACOSX") continue;
         if (e.is_directory() && !e.is_symlink()) out.push_back({file, e.path(), ""});
-        else if (e.is_regular_file() && std::regex_match(file, m, std::regex("(.+)\\.(zip|tar\\.gz|tgz|tar|tar\\.xz)", std::regex::icase)))
-            out.push_back({m[1], e.path(), m[2].str() == "zip" || m[2].str() == "ZIP" ? "zip" : "tar"});
+        else if (e.is_regular_file() && std::regex_match(file, m, std::regex("(.+)\\.(?:(zip)|tar\\.gz|tgz|tar|tar\\.xz)", std::regex::icase)))
+            out.push_back({m[1], e.path(), m[2].matched ? "zip" : "tar"});  // any case: .zip, .ZIP, .Zip
         else std::cerr << "ignored: " << file << " (neither a folder nor a .zip/.tar.gz/.tgz/.tar)\n";
     }
     std::sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.name < b.name; });
