@@ -43,15 +43,11 @@ uid_t bubblewrapUser() { return weakened("pid") ? 64198 : 65534; }
 /// Calls fn(path, stat) for each entry of `dir` (or of its whole tree), never following a link.
 template <class Fn> void forEachEntry(const fs::path& dir, bool recursive, Fn fn) {
     std::error_code ec;
-    const auto visit = [&](const fs::path& p) {
+    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec)) {
+        if (!recursive) it.disable_recursion_pending();
         struct stat st {};
-        if (::lstat(p.c_str(), &st) == 0) fn(p, st);
-    };
-    if (!recursive)
-        for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) visit(it->path());
-    else
-        for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec))
-            visit(it->path());
+        if (::lstat(it->path().c_str(), &st) == 0) fn(it->path(), st);
+    }
 }
 
 /// Processes the user `uid` has now (RLIMIT_NPROC counts them all, so the limit is this + allowance).
