@@ -13,9 +13,7 @@
 
 namespace grade {
 
-namespace {
-const char* const kStatusNames[] = {"graded", "not submitted", "rejected", "does not compile", "does not link", "not graded"};
-}  // namespace
+static const char* const kStatusNames[] = {"graded", "not submitted", "rejected", "does not compile", "does not link", "not graded"};
 
 std::string statusName(Status s) { return kStatusNames[static_cast<int>(s)]; }
 

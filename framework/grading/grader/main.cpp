@@ -1,11 +1,4 @@
-// clothlab-grade: points per stage from the graded tests (docs/grading.md).
-//
-//   --submission DIR   grade a student's folder (lint, sandboxed compile and tests; submission.h)
-//   --class DIR        grade one folder or archive per student into a gradebook (class_grading.h)
-//   --stage NN         with either: grade only these stages
-//   --binary NN=EXE    run a graded binary the build made (the suite's self-checks, with --expect)
-//   --sandbox MODE     auto (bubblewrap where it works, else container mode), bubblewrap or container
-//
+// clothlab-grade: points per stage from the graded tests (docs/grading.md; the options: --help).
 // Every test runs in its own sandboxed process (sandbox.h) and counts only when the grader saw it
 // start and pass over the test process's channel (test_process/graded_main.cpp).
 #include <unistd.h>

@@ -101,7 +101,6 @@ void writeJunit(const fs::path& path, const std::vector<StageResult>& stages, co
 }
 
 json gradescopeJson(const std::vector<StageResult>& stages, double execution_seconds) {
-    // Field names and values as Gradescope's autograder specification names them (see report.h).
     // A bonus test has max_score 0: Gradescope adds its score as extra credit.
     json tests = json::array();
     for (const auto& s : stages)

@@ -40,10 +40,11 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
         run.argv.push_back("--clothlab-server=/grade/submission");
         run.mounts.push_back({server, "/grade/submission", false});
     }
+    const fs::path gtest_out = log.parent_path() / (log.stem().string() + ".out");
     if (weakened("channel")) {  // test tool only: GoogleTest writes its JSON result where the grader reads it
-        makeWritableForSandbox(log.parent_path() / (log.stem().string() + ".out"));
+        makeWritableForSandbox(gtest_out);
         run.argv.push_back("--gtest_output=json:/grade/out/result.json");
-        run.mounts.push_back({log.parent_path() / (log.stem().string() + ".out"), "/grade/out", true});
+        run.mounts.push_back({gtest_out, "/grade/out", true});
     }
     // The graded experiments read the student's answers.json from here (tests/test_util.h answersPath).
     // One solver thread (OMP_NUM_THREADS, read by the solver's default team size, sim/team.h): the test
@@ -77,7 +78,7 @@ TestResult runTest(const fs::path& exe, const fs::path& server, const fs::path& 
     // the submission's.
     const auto by = [&](int sig) { return out.exit_code == 128 + sig || signals.count(sig); };
     const int code = out.exit_code;
-    if (weakened("channel")) r.passed = googleTestSaysPassed(name, log.parent_path() / (log.stem().string() + ".out/result.json"), log);
+    if (weakened("channel")) r.passed = googleTestSaysPassed(name, gtest_out / "result.json", log);
     else if (out.timed_out) r.message = "timed out: still running after " + std::to_string(run.timeout_seconds) + " s (waiting forever?)";
     else if (by(SIGXCPU) || by(SIGKILL)) r.message = "timed out: used more than " + std::to_string(timeout_s) + " s of CPU time (an endless loop?)";
     else if (!failures.empty()) r.message = failures;
@@ -147,7 +148,6 @@ fs::path answersFolder(const fs::path& file, const fs::path& folder) {
 
 StageResult gradeBinary(const fs::path& points_dir, const std::string& stage, const fs::path& exe, const fs::path& answers,
                         int timeout_seconds, int jobs, const fs::path& tmp) {
-    // The suite's integrity: the binary's tests and the points file name the same tests.
     fs::create_directories(tmp);
     SandboxRun list;
     list.argv = {"/grade/test", "--gtest_list_tests"};

@@ -26,20 +26,13 @@
 
 #include "common.h"
 
-// Landlock access rights newer than Debian 12's kernel headers (the kernel says which it has).
-#ifndef LANDLOCK_ACCESS_FS_REFER
-#define LANDLOCK_ACCESS_FS_REFER (1ULL << 13)
-#endif
-#ifndef LANDLOCK_ACCESS_FS_TRUNCATE
-#define LANDLOCK_ACCESS_FS_TRUNCATE (1ULL << 14)
-#endif
-#ifndef LANDLOCK_ACCESS_FS_IOCTL_DEV
-#define LANDLOCK_ACCESS_FS_IOCTL_DEV (1ULL << 15)
-#endif
-
 namespace grade {
 
 namespace {
+
+// Landlock access rights newer than Debian 12's kernel headers (the kernel says which it has):
+// LANDLOCK_ACCESS_FS_REFER, _TRUNCATE and _IOCTL_DEV.
+constexpr uint64_t kLandlockRefer = 1ULL << 13, kLandlockTruncate = 1ULL << 14, kLandlockIoctlDev = 1ULL << 15;
 
 Confinement g_confinement = Confinement::bubblewrap;
 /// The user bubblewrap runs the programs as when the grader is root: nobody (test tool only, `pid`
@@ -50,15 +43,11 @@ uid_t bubblewrapUser() { return weakened("pid") ? 64198 : 65534; }
 /// Calls fn(path, stat) for each entry of `dir` (or of its whole tree), never following a link.
 template <class Fn> void forEachEntry(const fs::path& dir, bool recursive, Fn fn) {
     std::error_code ec;
-    const auto visit = [&](const fs::path& p) {
+    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec)) {
+        if (!recursive) it.disable_recursion_pending();
         struct stat st {};
-        if (::lstat(p.c_str(), &st) == 0) fn(p, st);
-    };
-    if (!recursive)
-        for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) visit(it->path());
-    else
-        for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec))
-            visit(it->path());
+        if (::lstat(it->path().c_str(), &st) == 0) fn(it->path(), st);
+    }
 }
 
 /// Processes the user `uid` has now (RLIMIT_NPROC counts them all, so the limit is this + allowance).
@@ -252,15 +241,15 @@ int landlockAbi() {
 int landlockRules(const SandboxRun& run, const fs::path& scratch) {
     if (landlockAbi() == 0 || weakened("landlock")) return -1;
     const int abi = landlockAbi();
-    const uint64_t handled = ((LANDLOCK_ACCESS_FS_MAKE_SYM << 1) - 1) | (abi >= 2 ? LANDLOCK_ACCESS_FS_REFER : 0) |
-                             (abi >= 3 ? LANDLOCK_ACCESS_FS_TRUNCATE : 0) | (abi >= 5 ? LANDLOCK_ACCESS_FS_IOCTL_DEV : 0);
+    const uint64_t handled = ((LANDLOCK_ACCESS_FS_MAKE_SYM << 1) - 1) | (abi >= 2 ? kLandlockRefer : 0) |
+                             (abi >= 3 ? kLandlockTruncate : 0) | (abi >= 5 ? kLandlockIoctlDev : 0);
     constexpr uint64_t read = LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR, execute = LANDLOCK_ACCESS_FS_EXECUTE;
-    constexpr uint64_t write = LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV |
+    constexpr uint64_t write = LANDLOCK_ACCESS_FS_WRITE_FILE | kLandlockTruncate | kLandlockIoctlDev |
                                LANDLOCK_ACCESS_FS_REMOVE_DIR | LANDLOCK_ACCESS_FS_REMOVE_FILE | LANDLOCK_ACCESS_FS_MAKE_DIR |
                                LANDLOCK_ACCESS_FS_MAKE_REG | LANDLOCK_ACCESS_FS_MAKE_SYM | LANDLOCK_ACCESS_FS_MAKE_FIFO |
-                               LANDLOCK_ACCESS_FS_MAKE_SOCK | LANDLOCK_ACCESS_FS_REFER;
+                               LANDLOCK_ACCESS_FS_MAKE_SOCK | kLandlockRefer;
     constexpr uint64_t fileRights = LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_WRITE_FILE |
-                                    LANDLOCK_ACCESS_FS_TRUNCATE | LANDLOCK_ACCESS_FS_IOCTL_DEV;  // the others are about folders
+                                    kLandlockTruncate | kLandlockIoctlDev;  // the others are about folders
     struct landlock_ruleset_attr attr {};
     attr.handled_access_fs = handled;
     const int ruleset = static_cast<int>(::syscall(SYS_landlock_create_ruleset, &attr, sizeof attr, 0));
@@ -484,8 +473,7 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     const Confinement mode = g_confinement;
     const bool bubblewrap = mode == Confinement::bubblewrap, container = mode == Confinement::container;
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe calls.
-    RunUser user;
-    if (container) user = leaseUser();
+    RunUser user = container ? leaseUser() : RunUser{};
     std::vector<std::string> args = bubblewrap ? bwrapArgs(run) : run.argv, env_text;
     std::string workdir;
     if (!bubblewrap) {
@@ -526,7 +514,6 @@ RunOutcome runSandboxed(const SandboxRun& run) {
     if (log < 0) die(run.log.string() + ": (file): cannot write the log");
     int report_pipe[2] = {-1, -1};
     if (run.channel && ::pipe2(report_pipe, O_CLOEXEC) != 0) die("cannot create a pipe");
-    const uid_t id = user.uid;
 
     const pid_t pid = ::fork();
     if (pid < 0) die("fork failed");
@@ -555,8 +542,8 @@ RunOutcome runSandboxed(const SandboxRun& run) {
             // bookkeeping across threads), which drops every capability; then no_new_privs, Landlock, seccomp.
             ::umask(022);
             if (::syscall(SYS_setgroups, 0, nullptr) != 0) childFails("setgroups");
-            if (::syscall(SYS_setresgid, id, id, id) != 0) childFails("setresgid");
-            if (::syscall(SYS_setresuid, id, id, id) != 0) childFails("setresuid");
+            if (::syscall(SYS_setresgid, user.uid, user.uid, user.uid) != 0) childFails("setresgid");
+            if (::syscall(SYS_setresuid, user.uid, user.uid, user.uid) != 0) childFails("setresuid");
             if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) childFails("no_new_privs");
             if (ruleset >= 0 && ::syscall(SYS_landlock_restrict_self, ruleset, 0) != 0) childFails("Landlock");
             if (filter && ::prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, filter) != 0) childFails("seccomp");

@@ -1,21 +1,12 @@
 // Running untrusted programs (a submission's compiler run, its test and submission processes)
-// confined, in one of two ways chosen once per grading (docs/grading.md, "Two confinements"):
-//
-//  - bubblewrap (bwrap, Debian package `bubblewrap`): new PID, network, IPC, UTS and cgroup namespaces
-//    (and a user namespace when the grader is not root), no capabilities, as user `nobody` when the
-//    grader runs as root, a fresh /tmp and only the paths in `mounts` (plus /usr, read-only). A
-//    wall-clock timeout kills the whole sandbox (its PID namespace dies with it).
-//  - container mode, where no namespace can be made (Docker's default confinement: Gradescope,
-//    PrairieLearn) and the grader is root: each program runs as a user and group of its own (one per
-//    run at a time, no supplementary groups), with no_new_privs, Landlock rules where the kernel has
-//    them (read /usr and the run's read-only paths, write its writable paths and its own scratch
-//    folder, also its HOME and TMPDIR), and a seccomp filter (no sockets, ptrace, new namespaces,
-//    mounts, io_uring or System V IPC). The programs see the host's paths: a path of `mounts` in the
-//    arguments and environment becomes the mount's host path. When the run ends every process of its
-//    user is killed, what it wrote in its writable paths is handed to root, and what it left in /tmp,
-//    /var/tmp and /dev/shm is removed.
-//
-// Both apply the limits (setrlimit): CPU seconds, address space, file size, open files, processes.
+// confined, in one of two ways chosen once per grading (docs/grading.md, "Two confinements", has the
+// table of what each gives and lacks):
+//  - bubblewrap (bwrap): new PID, network, IPC, UTS and cgroup namespaces, no capabilities, user
+//    `nobody` when the grader is root, a fresh /tmp and only the paths in `mounts` (plus /usr, read-only);
+//  - container mode, where no namespace can be made (Docker's default confinement) and the grader is
+//    root: a user and group of its own per run, no_new_privs, Landlock where the kernel has it and a
+//    seccomp filter; the programs see the host's paths (a path of `mounts` becomes the mount's host path).
+// Both apply the limits (setrlimit) and a wall clock.
 #pragma once
 #include <filesystem>
 #include <string>

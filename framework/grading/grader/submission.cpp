@@ -134,10 +134,18 @@ bool usePrecompiledHeader(const Kit& kit, const std::string& source) {
     return !kit.precompiled_header.empty();
 }
 
-/// Where a submission's compiles and links run: with one job (each student of a class), on the CPU
-/// its tests run on, so that the students graded at once keep to their own CPUs (a compile beside a
-/// test on one CPU slows every call between its two processes); with more jobs, anywhere.
-int buildCpu(const GradeOptions& o) { return o.jobs == 1 ? usableCpu(o.first_cpu) : -1; }
+/// A compile or link run's limits, and its CPU: with one job (each student of a class), the CPU its
+/// tests run on, so that the students graded at once keep to their own CPUs (a compile beside a test
+/// on one CPU slows every call between its two processes); with more jobs, anywhere.
+SandboxRun buildRun(const GradeOptions& o, const fs::path& log) {
+    SandboxRun r;
+    r.limits.cpu_seconds = 120;
+    r.limits.processes = 16;
+    r.timeout_seconds = 180;
+    r.cpu = o.jobs == 1 ? usableCpu(o.first_cpu) : -1;
+    r.log = log;
+    return r;
+}
 
 /// Lints and compiles one stage of the submission (sandboxed, each .cpp on its own) into work/obj/NN,
 /// or the shared cache; reused while the kit and the stage's file names and bytes are the same.
@@ -162,7 +170,7 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
         if (units.empty()) findings += st.dir + ": no .cpp file\n";
         if (!findings.empty()) return json{{"status", Status::rejected}, {"problem", findings + copied}};
         for (const auto& u : units) {
-            SandboxRun r;
+            SandboxRun r = buildRun(o, o.work / ("compile_" + st.stage + ".log"));
             r.argv = {kit.compiler};
             r.argv.insert(r.argv.end(), kit.compile_flags.begin(), kit.compile_flags.end());
             r.argv.insert(r.argv.end(), {"-fdiagnostics-color=never", "-fmax-errors=10", "-I/kit/include"});
@@ -177,11 +185,6 @@ Compiled compileStage(const Kit& kit, const KitStage& st, const fs::path& folder
                                                  "-I" + (build / "tests/generated").string()});
                 r.mounts.insert(r.mounts.end(), {{tree, tree, false}, {build / "tests/generated", build / "tests/generated", false}});
             }
-            r.limits.cpu_seconds = 120;
-            r.limits.processes = 16;
-            r.timeout_seconds = 180;
-            r.cpu = buildCpu(o);
-            r.log = o.work / ("compile_" + st.stage + ".log");
             const RunOutcome out = runSandboxed(r);
             if (out.exit_code != 0 || !fs::exists(obj / (u.stem().string() + ".o"))) {
                 std::string log = std::regex_replace(readFile(r.log, 64u << 10), std::regex("/submission/"), "");
@@ -211,7 +214,7 @@ fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const 
     *problem = cached(bin / (name + ".json"), hash, [&] {
         fs::remove(exe);
         makeWritableForSandbox(bin);
-        SandboxRun r;
+        SandboxRun r = buildRun(o, o.work / ("link_" + name + ".log"));
         r.argv = {kit.compiler};
         for (const auto& p : inputs) {
             r.argv.push_back(p.string());
@@ -220,12 +223,7 @@ fs::path linkProgram(const Kit& kit, const std::vector<fs::path>& inputs, const 
         r.argv.insert(r.argv.end(), flags.begin(), flags.end());
         r.argv.insert(r.argv.end(), {"-o", "/out/" + name});
         r.mounts.push_back({bin, "/out", true});
-        r.limits.cpu_seconds = 120;
-        r.limits.processes = 16;
         r.limits.file_size = 512LL << 20;
-        r.timeout_seconds = 180;
-        r.cpu = buildCpu(o);
-        r.log = o.work / ("link_" + name + ".log");
         if (runSandboxed(r).exit_code == 0 && fs::exists(exe)) return json("");
         const std::string log = std::regex_replace(readFile(r.log, 64u << 10), std::regex("[^\n]*/obj/[0-9]+/([A-Za-z0-9_.-]+)\\.o"), "$1.cpp");
         return json(firstLines(log, 8, "") + "\n");

@@ -15,8 +15,8 @@
 #include <cctype>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,9 +37,7 @@ std::string trim(const std::string& s) {
 std::string code(const std::string& file) {
     std::ifstream in(file);
     if (!in) throw std::runtime_error("cannot read");
-    std::stringstream buf;
-    buf << in.rdbuf();
-    const std::string text = buf.str();
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     std::string out;
     bool lineStart = true;
     for (size_t i = 0; i < text.size(); ++i) {

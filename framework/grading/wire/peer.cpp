@@ -30,10 +30,7 @@ bool writeAll(int fd, const char* p, size_t n) {
     return true;
 }
 
-std::string thrown(Thrown kind, const std::string& text) {
-    std::string body(1, static_cast<char>(kind));
-    return body + text.substr(0, 4000);
-}
+std::string thrown(Thrown kind, const std::string& text) { return std::string(1, static_cast<char>(kind)) + text.substr(0, 4000); }
 
 }  // namespace
 

@@ -1,12 +1,12 @@
 // The values that cross between a graded test process and the submission process (wire/peer.h),
 // as nlohmann::json in its binary form CBOR: a call's arguments are one JSON array, its results
-// another. Each struct that crosses is declared once below with CLOTHLAB_WIRE; the structured
-// binding in that macro does not compile when the list leaves a field of the struct out.
-// Numbers cross bit for bit: a single value as a JSON number (CBOR keeps a double's 64 bits), a
-// matrix as [rows, cols, raw coefficients], and a list of numbers, matrices or flat structs as
-// CBOR byte strings, one per field (a step's thousands of springs in a few memcpy()s, not a JSON
-// value per spring). std::function crosses as a callback id the other side calls back.
+// another. Each struct that crosses is declared once below with CLOTHLAB_WIRE. Numbers cross bit
+// for bit: a single value as a JSON number (CBOR keeps a double's 64 bits), a matrix as [rows, cols,
+// raw coefficients], and a list of numbers, matrices or flat structs as CBOR byte strings, one per
+// field (a step's thousands of springs in a few memcpy()s, not a JSON value per spring).
+// std::function crosses as a callback id the other side calls back.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -36,9 +36,7 @@ namespace clothlab::wire {
 using json = nlohmann::json;
 
 /// A message that does not follow the format (only the submission's process can send one).
-struct ProtocolError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+struct ProtocolError : std::runtime_error { using std::runtime_error::runtime_error; };
 
 class Peer;
 
@@ -55,17 +53,13 @@ struct CallContext {
 CallContext& callContext();
 
 /// Sets the call context for a scope and puts the previous one back at its end.
-class ContextScope {
-public:
-    ContextScope(Peer* peer, long long particles, long long indexLimit = -1) : saved_(callContext()) {
+struct ContextScope {
+    ContextScope(Peer* peer, long long particles, long long indexLimit = -1) : saved(callContext()) {
         callContext() = {peer, particles, indexLimit};
     }
-    ~ContextScope() { callContext() = saved_; }
-    ContextScope(const ContextScope&) = delete;
-    ContextScope& operator=(const ContextScope&) = delete;
-
-private:
-    CallContext saved_;
+    ~ContextScope() { callContext() = saved; }
+    ContextScope(const ContextScope&) = delete;  // (and no assignment: `saved` is const)
+    const CallContext saved;
 };
 
 }  // namespace clothlab::wire
@@ -168,42 +162,23 @@ inline const std::vector<std::uint8_t>& bytesIn(const json& j, size_t count, siz
     return j.get_binary();
 }
 
-/// A list of fixed-size values as one byte string (bool as a byte, an enum as int32).
+/// A list of fixed-size values as one byte string: a bool as one byte, anything else as its bytes,
+/// which for an enum are an int32's and for a fixed-size matrix only its coefficients.
+template <class T> constexpr bool bytesAreTheValue() {
+    if constexpr (IsMatrix<T>::value) return sizeof(T) == T::SizeAtCompileTime * sizeof(typename T::Scalar);
+    else return !std::is_enum_v<T> || sizeof(T) == 4;
+}
 template <class T> json bitsToWire(const std::vector<T>& v) {
-    if constexpr (std::is_same_v<T, bool>) {
-        std::vector<std::uint8_t> b(v.begin(), v.end());
-        return bytesOf(b.data(), b.size());
-    } else if constexpr (std::is_enum_v<T>) {
-        std::vector<std::int32_t> b(v.size());
-        for (size_t i = 0; i < v.size(); ++i) b[i] = static_cast<std::int32_t>(v[i]);
-        return bytesOf(b.data(), b.size() * 4);
-    } else if constexpr (IsMatrix<T>::value) {
-        std::vector<typename T::Scalar> b(v.size() * T::SizeAtCompileTime);
-        for (size_t i = 0; i < v.size(); ++i) std::copy(v[i].data(), v[i].data() + T::SizeAtCompileTime, &b[i * T::SizeAtCompileTime]);
-        return bytesOf(b.data(), b.size() * sizeof(typename T::Scalar));
-    } else {
-        return bytesOf(v.data(), v.size() * sizeof(T));
-    }
+    static_assert(bytesAreTheValue<T>(), "a value whose bytes are not its wire format");
+    if constexpr (!std::is_same_v<T, bool>) return bytesOf(v.data(), v.size() * sizeof(T));
+    else return bytesOf(std::vector<std::uint8_t>(v.begin(), v.end()).data(), v.size());
 }
 template <class T> void bitsFromWire(const json& j, size_t count, std::vector<T>& v) {
+    static_assert(bytesAreTheValue<T>(), "a value whose bytes are not its wire format");
     v.resize(count);
-    if constexpr (std::is_same_v<T, bool>) {
-        const auto& b = bytesIn(j, count, 1);
-        for (size_t i = 0; i < count; ++i) v[i] = b[i] != 0;
-    } else if constexpr (std::is_enum_v<T>) {
-        const auto& b = bytesIn(j, count, 4);
-        for (size_t i = 0; i < count; ++i) {
-            std::int32_t e;
-            std::memcpy(&e, &b[4 * i], 4);
-            v[i] = static_cast<T>(e);
-        }
-    } else if constexpr (IsMatrix<T>::value) {
-        constexpr size_t n = T::SizeAtCompileTime, size = n * sizeof(typename T::Scalar);
-        const auto& b = bytesIn(j, count, size);
-        for (size_t i = 0; i < count; ++i) std::memcpy(v[i].data(), &b[i * size], size);
-    } else {
-        std::memcpy(v.data(), bytesIn(j, count, sizeof(T)).data(), count * sizeof(T));
-    }
+    const auto& b = bytesIn(j, count, sizeof(T));
+    if constexpr (!std::is_same_v<T, bool>) std::memcpy(static_cast<void*>(v.data()), b.data(), b.size());
+    else std::transform(b.begin(), b.end(), v.begin(), [](std::uint8_t x) { return x != 0; });
 }
 
 /// Field I of every element of a list of flat structs, as one byte string.
