@@ -628,10 +628,10 @@ void App::panelScene() {
         ImGui::PopStyleColor();
     }
     if (!compareMode()) {
-        const ImVec2 at = ImGui::GetCursorScreenPos();
-        const float w = ImGui::CalcItemWidth();
+        const ImVec2 at = ImGui::GetCursorScreenPos();  // the combo's box (once open, the last item is its popup's)
+        const ImVec2 end(at.x + ImGui::CalcItemWidth(), at.y + ImGui::GetFrameHeight());
         const bool open = ImGui::BeginCombo("method", methodName(variants_.front().solver.method));
-        controls_["method"] = Viewport{static_cast<int>(at.x), static_cast<int>(at.y), static_cast<int>(w), static_cast<int>(ImGui::GetFrameHeight())};
+        rememberControl("method", at, end);
         if (open) {
             for (Method m : allMethods()) {
                 if (ImGui::Selectable(methodName(m), m == variants_.front().solver.method)) {
@@ -998,8 +998,9 @@ void App::drawLabels() {
 }
 
 // The last item's rectangle (ImGui's screen coordinates: CSS pixels in a browser) under NAME, for the status.
-void App::rememberControl(const std::string& name) {
-    const ImVec2 p = ImGui::GetItemRectMin(), q = ImGui::GetItemRectMax();
+void App::rememberControl(const std::string& name) { rememberControl(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax()); }
+
+void App::rememberControl(const std::string& name, const ImVec2& p, const ImVec2& q) {
     controls_[name] = Viewport{static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(q.x - p.x), static_cast<int>(q.y - p.y)};
 }
 

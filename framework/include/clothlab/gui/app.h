@@ -20,6 +20,8 @@
 #include "clothlab/sim/simulation.h"
 #include "clothlab/study/compare.h"
 
+struct ImVec2;  // Dear ImGui's 2-D point (imgui.h)
+
 namespace clothlab {
 
 /// How a stage's code was chosen at build time (stageCode(), core/stub_advice.h).
@@ -157,7 +159,8 @@ private:
     void drawLabels();
     bool compareMode() const { return variants_.size() > 1; }
     int runAt(double px, double py) const;
-    void rememberControl(const std::string& name);
+    void rememberControl(const std::string& name);  // the last item's rectangle
+    void rememberControl(const std::string& name, const ImVec2& min, const ImVec2& max);
     void wrote(const std::string& path);
     DrawData drawData(size_t i) const;
     std::string runLabel(const CompareVariant& v) const;
