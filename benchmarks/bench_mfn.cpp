@@ -74,7 +74,7 @@ static void BM_ImplicitLargeStep(benchmark::State& st, ImplicitSolve how, int th
     for (const Metric& m : sim->metrics())
         if (m.name == "solve_residual" || m.name == "solve_iterations") st.counters[m.name] = m.value;
 }
-// The default (block CG above 1500 unknowns) on 1 and 2 threads, and the sparse Cholesky factorisation.
+// The default (block CG above 300 unknowns) on 1 and 2 threads, and the sparse Cholesky factorisation.
 BENCHMARK_CAPTURE(BM_ImplicitLargeStep, default, ImplicitSolve::Auto)->Arg(64)->Arg(128)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_ImplicitLargeStep, default_2_threads, ImplicitSolve::Auto, 2)->Arg(64)->Arg(128)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_ImplicitLargeStep, cholesky, ImplicitSolve::Cholesky)->Arg(64)->Arg(128)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The browser's simulation step against the native one, in one run (docs/performance.md "In a browser").
 #   bash benchmarks/web_step.sh [BUILD_DIR] [STEPS]      (after ./lab web --no-serve; about a minute)
-# 1. Step time: the 64² draped cloth (scenes/pbd_sphere.json at cloth.nx = ny = 64), STEPS steps
+# 1. Step time, per kernel (exercise; batched where the copy has solutions/kernels/): the 64² draped
+#    cloth (scenes/pbd_sphere.json at cloth.nx = ny = 64), STEPS steps
 #    (default 100): the sum of the simulation's pass times per step (Simulation::timer(), what the run
 #    report's "passes that ran" lists), native on one thread (solver.threads=1, BUILD_DIR/bin/clothlab)
 #    and in headless chromium (WebAssembly, one thread, -msimd128; ?steps=N), and their ratio.
 #    The simulation's time per displayed frame of 1/60 s follows: the step time x (1/60 s) / dt.
-# 2. The app's frame in the browser, playing in real time for 10 s (?timing=1): the simulation's time per
+# 2. The app's frame in the browser, playing in real time for 10 s (?timing=1; the last kernel above): the simulation's time per
 #    displayed frame (app.timings_ms.simulate), the drawing's and the panel's, and the frame rate. In
 #    headless chromium without a GPU (SwiftShader renders WebGL on the CPU) drawing dominates and says
 #    little about a laptop's GPU; the simulation's time is the figure to compare with the frame's
@@ -24,13 +25,21 @@ trap 'kill $server 2>/dev/null; rm -rf "$tmp"' EXIT
 sleep 1
 set64="set=cloth.nx=64&set=cloth.ny=64"
 echo "load: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores), $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u '+%Y-%m-%d %H:%M UTC'), $(chromium --version 2>/dev/null | head -1)"
-native=$("${CLOTHLAB_NATIVE:-$build/bin/clothlab}" run scenes/pbd_sphere.json --set cloth.nx=64 --set cloth.ny=64 --set solver.threads=1 --steps "$steps" --quiet 2>&1 \
-         | awk '/^passes that ran/ { on = 1; next } on && / s +[0-9]+ calls/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "s") { t += $i; break } } END { printf "%.3f", 1000 * t }')
-python3 tests/web/page_run.py "http://127.0.0.1:$port/index.html?scene=pbd_sphere&$set64&steps=$steps" --seconds 300 --until-done >"$tmp/steps.json"
-web=$(jq -r --argjson n "$steps" '.app.runs[0].wall * 1000 | . * 1000 | round / 1000' "$tmp/steps.json")
 dt=$(jq -r '.solver.dt' scenes/pbd_sphere.json)
-awk -v n="$steps" -v a="$native" -v b="$web" -v dt="$dt" 'BEGIN {
-  printf "pbd_sphere 64x64, %d steps: native %.2f ms per step (1 thread), browser %.2f ms per step, ratio %.2f\n", n, a / n, b / n, b / a
-  printf "simulation per 1/60 s frame (%.3f steps of dt = %g s; real time needs <= 16.7 ms): browser %.1f ms, native %.1f ms\n", 1 / (60 * dt), dt, b / n / (60 * dt), a / n / (60 * dt) }'
-python3 tests/web/page_run.py "http://127.0.0.1:$port/index.html?scene=pbd_sphere&$set64&timing=1" --seconds 10 >"$tmp/play.json"
-jq -r '"pbd_sphere 64x64 playing 10 s: simulation \(.app.timings_ms.simulate * 10 | round / 10) ms per frame, drawing \(.app.timings_ms.draw * 10 | round / 10) ms, panel \(.app.timings_ms.panel * 10 | round / 10) ms, \(1000 / .ms_per_frame * 10 | round / 10) frames per s (SwiftShader), \(.app.realtime * 100 | round / 100) x real time"' "$tmp/play.json"
+# The kernels this copy has: the exercise path always; the batched kernels in the instructor's copy
+# (solutions/kernels/, in the native programs and the page alike).
+kernels=(exercise)
+[[ -d solutions/kernels ]] && kernels+=(batched)
+for kernel in "${kernels[@]}"; do
+  native=$("${CLOTHLAB_NATIVE:-$build/bin/clothlab}" run scenes/pbd_sphere.json --set cloth.nx=64 --set cloth.ny=64 --set solver.threads=1 \
+             --set solver.kernel="$kernel" --steps "$steps" --quiet 2>&1 \
+           | awk '/^passes that ran/ { on = 1; next } on && / s +[0-9]+ calls/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "s") { t += $i; break } } END { printf "%.3f", 1000 * t }')
+  python3 tests/web/page_run.py "http://127.0.0.1:$port/index.html?scene=pbd_sphere&$set64&set=solver.kernel=$kernel&steps=$steps" \
+    --seconds 300 --until-done >"$tmp/steps.json"
+  web=$(jq -r --argjson n "$steps" '.app.runs[0].wall * 1000 | . * 1000 | round / 1000' "$tmp/steps.json")
+  awk -v n="$steps" -v a="$native" -v b="$web" -v dt="$dt" -v k="$kernel" 'BEGIN {
+    printf "pbd_sphere 64x64, %d steps, kernel %s: native %.2f ms per step (1 thread), browser %.2f ms per step, ratio %.2f\n", n, k, a / n, b / n, b / a
+    printf "  simulation per 1/60 s frame (%.3f steps of dt = %g s; real time needs <= 16.7 ms): browser %.1f ms, native %.1f ms\n", 1 / (60 * dt), dt, b / n / (60 * dt), a / n / (60 * dt) }'
+done
+python3 tests/web/page_run.py "http://127.0.0.1:$port/index.html?scene=pbd_sphere&$set64&set=solver.kernel=$kernel&timing=1" --seconds 10 >"$tmp/play.json"
+jq -r --arg k "$kernel" '"pbd_sphere 64x64 playing 10 s, kernel \($k): simulation \(.app.timings_ms.simulate * 10 | round / 10) ms per frame, drawing \(.app.timings_ms.draw * 10 | round / 10) ms, panel \(.app.timings_ms.panel * 10 | round / 10) ms, \(1000 / .ms_per_frame * 10 | round / 10) frames per s (SwiftShader), \(.app.realtime * 100 | round / 100) x real time"' "$tmp/play.json"

@@ -55,6 +55,9 @@ target_include_directories(clothlab-web PRIVATE "${_host}")
 target_compile_options(clothlab-web PRIVATE -msimd128)
 target_link_libraries(clothlab-web PRIVATE clothlab_headers clothlab_web_imgui)
 clothlab_link_stages(clothlab-web "")
+# The instructor's copy: the batched kernels (solver.kernel "batched", solutions/kernels/) in the page
+# too, for the lecture site's demos; the student copy has none, as natively.
+include(cmake/extensions.cmake)
 set(_font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf)
 set(_preload "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/scenes@/scenes")  # SHELL: CMake would merge the repeated option
 if(EXISTS "${_font}")

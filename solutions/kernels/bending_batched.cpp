@@ -2,7 +2,7 @@
 //
 // How it is made fast, for the curious (none of this is needed for the exercises):
 // - the stencils of a block share no particle, so `#pragma omp simd` may run them side by side:
-//   8 at once in AVX-512 registers, 4 with AVX2;
+//   8 at once in AVX-512 registers, 4 with AVX2, 2 in WebAssembly's 128-bit vectors (./lab web);
 // - with AVX-512 (sweepDirect) the vector loop loads and stores p itself, with gather and scatter
 //   instructions; without (sweepStaged: AVX2 has no scatter) the vector loop writes the corrections
 //   to an array, and a plain loop adds them to p;
@@ -12,7 +12,7 @@
 //   (`c ? x : y` on doubles), and the angle is a polynomial instead of std::acos (a library call
 //   the loop cannot vectorise);
 // - the file is compiled with -fno-math-errno (sqrt may become one instruction) and
-//   -fno-trapping-math (see framework/CMakeLists.txt); results are IEEE double arithmetic, with
+//   -fno-trapping-math (see cmake/extensions.cmake); results are IEEE double arithmetic, with
 //   fused multiply-adds where the CPU has them, so the last digits depend on the CPU.
 #include "bending_batched.h"
 
@@ -23,8 +23,10 @@ namespace clothlab {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kTanPi8 = 0.41421356237309504880;  // tan(π/8) = √2 − 1
-constexpr int kAtanTerms = 20;
+constexpr double kTanPi16 = 0.19891236737965800691;   // tan(π/16) = √(4 + 2√2) − √2 − 1
+constexpr double kTanPi8 = 0.41421356237309504880;    // tan(π/8) = √2 − 1
+constexpr double kTan3Pi16 = 0.66817863791929891999;  // tan(3π/16) = √(4 − 2√2) − √2 + 1
+constexpr int kAtanTerms = 12;  // |t| <= tan(π/16): truncation error below t²⁵/25 < 1e-19
 
 // c_n = (−1)^n / (2n + 1), the Taylor coefficients of arctan, computed by the compiler.
 struct AtanCoefficients {
@@ -38,14 +40,24 @@ constexpr AtanCoefficients kAtan;
 // atan2(y, x) for y >= 0, one division, no branch (see atan2Upper()).
 [[gnu::always_inline]] inline double angleUpper(double y, double x) {
     const double ax = std::fabs(x);
-    const double mn = y < ax ? y : ax, mx = y < ax ? ax : y;  // angle of (mx, mn) is in [0, π/4]
-    const bool far = mn > kTanPi8 * mx;                        // in (π/8, π/4]: shift by π/4
-    const double t = (far ? mn - mx : mn) / (far ? mn + mx : mx);  // |t| <= tan(π/8)
-    const double t2 = t * t;
-    double poly = kAtan.c[kAtanTerms - 1];
-#pragma GCC unroll 20
-    for (int n = kAtanTerms - 2; n >= 0; --n) poly = poly * t2 + kAtan.c[n];
-    double angle = (far ? 0.25 * kPi : 0.0) + t * poly;
+    const double mn = y < ax ? y : ax, mx = y < ax ? ax : y;  // angle θ of (mx, mn) is in [0, π/4]
+    // θ − σ for the nearest σ of 0, π/8, π/4: tan(θ − σ) = (mn − mx tan σ) / (mx + mn tan σ)
+    const bool past1 = mn > kTanPi16 * mx, past3 = mn > kTan3Pi16 * mx;  // θ > π/16, θ > 3π/16
+    const double tanSigma = past3 ? 1.0 : past1 ? kTanPi8 : 0.0;
+    const double t = (mn - mx * tanSigma) / (mx + mn * tanSigma);  // |t| <= tan(π/16)
+    // Σ c_n t2ⁿ as four Horner chains in t2⁴ (chain r: c_r, c_{r+4}, ...): the same polynomial, but
+    // four independent multiply-add chains instead of one, which a vector loop would wait on.
+    const double t2 = t * t, t4 = t2 * t2, t8 = t4 * t4;
+    static_assert(kAtanTerms % 4 == 0, "four chains of equal length");
+    double q[4];
+#pragma GCC unroll 4
+    for (int r = 0; r < 4; ++r) {
+        q[r] = kAtan.c[kAtanTerms - 4 + r];
+#pragma GCC unroll 3
+        for (int n = kAtanTerms - 8 + r; n >= 0; n -= 4) q[r] = q[r] * t8 + kAtan.c[n];
+    }
+    const double poly = (q[0] + t2 * q[1]) + t4 * (q[2] + t2 * q[3]);
+    double angle = (past3 ? 0.25 * kPi : past1 ? 0.125 * kPi : 0.0) + t * poly;
     angle = y > ax ? 0.5 * kPi - angle : angle;  // undo the swap of x and y
     return x < 0.0 ? kPi - angle : angle;        // undo the mirror at the y axis
 }

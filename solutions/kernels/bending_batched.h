@@ -98,8 +98,9 @@ void projectBendingBlocksXpbd(const BendingBlocks& blocks, const VectorX& w, dou
 bool bendingBlocksUseScatter();
 
 /// The angle atan2(y, x) ∈ [0, π] for y ≥ 0 as the kernel computes it, without a library call:
-/// reduced to |t| ≤ tan(π/8) (octant and a π/4 shift, \f$\arctan u-\frac{\pi}{4}=\arctan\frac{u-1}{u+1}\f$), then
-/// \f$\arctan t=\sum_{n=0}^{19}(-1)^n\frac{t^{2n+1}}{2n+1}\f$ (truncation error below 1e-17).
+/// reduced to θ ∈ [0, π/4] (the octant), then to |t| ≤ tan(π/16) by the nearest shift σ of 0, π/8,
+/// π/4 (\f$\arctan u-\sigma=\arctan\frac{u-\tan\sigma}{1+u\tan\sigma}\f$, one division), then
+/// \f$\arctan t=\sum_{n=0}^{11}(-1)^n\frac{t^{2n+1}}{2n+1}\f$ (truncation error below 1e-19).
 /// @param y  the sine side, y ≥ 0
 /// @param x  the cosine side
 /// @return   the angle, rad (NaN for y = x = 0)

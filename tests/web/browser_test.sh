@@ -13,6 +13,8 @@
 # of STEPS + 1 steps (one step off). Then the script must fail with the check that PLANT names (the
 # tests web.planted_*).
 #   browser_test.sh --unknown-scene WEBDIR TMP: ?scene=no_such_scene shows the message, not a blank page.
+# SETS (environment, e.g. "solver.kernel=batched"): KEY=VALUE settings, space-separated, for both runs
+# (the page's ?set=KEY=VALUE, the native run's --set KEY=VALUE).
 set -uo pipefail
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
@@ -37,7 +39,9 @@ server=$!
 trap 'kill $server 2>/dev/null' EXIT
 for _ in $(seq 50); do python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/index.html')" 2>/dev/null && break; sleep 0.1; done
 
-if ((unknown)); then url="http://127.0.0.1:$port/index.html?scene=no_such_scene"; else url="http://127.0.0.1:$port/index.html?scene=$scene&steps=$steps"; fi
+sets=() query=""
+for kv in ${SETS:-}; do sets+=(--set "$kv"); query+="&set=$kv"; done
+if ((unknown)); then url="http://127.0.0.1:$port/index.html?scene=no_such_scene"; else url="http://127.0.0.1:$port/index.html?scene=$scene&steps=$steps$query"; fi
 # Real time, real frames: chromium driven over its DevTools pipe (page_run.py) until the page's status
 # says done (or 5 s for the unknown scene), at most CLOTHLAB_WEB_SECONDS (default 120) s; a screenshot.
 seconds=${CLOTHLAB_WEB_SECONDS:-120}
@@ -69,8 +73,8 @@ jq -e '.finite and (.centroid | all(. != null))' "$tmp/status.json" >/dev/null |
 # The native run of the same scene: its start and its state after the same steps (CSV i,x,y,z,...).
 native_steps=$steps
 [[ ${PLANT:-} == steps ]] && native_steps=$((steps + 1))
-"$clothlab" run "$scenes/$scene.json" --steps 0 --dump "$tmp/start.csv" --quiet >/dev/null || fail "native run (0 steps) failed"
-"$clothlab" run "$scenes/$scene.json" --steps "$native_steps" --dump "$tmp/native.csv" --quiet >/dev/null || fail "native run failed"
+"$clothlab" run "$scenes/$scene.json" "${sets[@]}" --steps 0 --dump "$tmp/start.csv" --quiet >/dev/null || fail "native run (0 steps) failed"
+"$clothlab" run "$scenes/$scene.json" "${sets[@]}" --steps "$native_steps" --dump "$tmp/native.csv" --quiet >/dev/null || fail "native run failed"
 centroid() { awk -F, 'NR > 1 && $1 ~ /^[0-9]+$/ { x += $2; y += $3; z += $4; n++ } END { printf "%.9f %.9f %.9f\n", x / n, y / n, z / n }' "$1"; }
 read -r sx sy sz <<<"$(centroid "$tmp/start.csv")"
 read -r nx ny nz <<<"$(centroid "$tmp/native.csv")"
@@ -80,4 +84,4 @@ diff=$(awk -v a="$wx $wy $wz" -v b="$nx $ny $nz" 'BEGIN { split(a, p, " "); spli
 awk -v m="$moved" 'BEGIN { exit !(m >= 0.01) }' || fail "moves: the centroid moved only $moved m in $steps steps"
 awk -v d="$diff" -v t="$tol" 'BEGIN { exit !(d <= t) }' \
   || fail "matches native: the browser's centroid ($wx $wy $wz) is $diff m from the native run's ($nx $ny $nz) after $steps steps (tolerance $tol m)"
-echo "ok: $scene, $steps steps in the browser: centroid moved $moved m, $diff m from the native run (tolerance $tol m), $(jq -r '.ms_per_frame | floor' "$tmp/status.json") ms per frame (SwiftShader, 10 steps per frame), no console error"
+echo "ok: $scene${SETS:+ (${SETS})}, $steps steps in the browser: centroid moved $moved m, $diff m from the native run (tolerance $tol m), $(jq -r '.ms_per_frame | floor' "$tmp/status.json") ms per frame (SwiftShader, 10 steps per frame), no console error"

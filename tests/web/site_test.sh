@@ -2,7 +2,8 @@
 # ./lab site: the static folder a lecturer publishes.
 #   site_test.sh SOURCE_DIR BUILD_DIR TMP
 # Runs ./lab site --out TMP/site (the app is built in BUILD_DIR/web) and checks: index.html links every
-# scene of scenes/ as app/index.html?scene=NAME and every stage's sheet, each sheet page exists with
+# scene of scenes/ as app/index.html?scene=NAME (with &set=solver.kernel=batched in the instructor's
+# copy) and every stage's sheet, each sheet page exists with
 # its headings, the app is there (index.html, clothlab.wasm), and no text file of the site holds a line
 # of the reference source (solutions/*/*.cpp lines of 30 characters or more that the stubs do not
 # have). Planted: a reference file copied into the site is caught.
@@ -13,9 +14,12 @@ rm -rf "$tmp" && mkdir -p "$tmp"
 site=$tmp/site
 CLOTHLAB_BUILD=$build "$src/lab" site --out "$site" >"$tmp/site.log" 2>&1 || fail "./lab site failed: $(tail -5 "$tmp/site.log")"
 [[ -f $site/index.html && -f $site/app/index.html && -f $site/app/clothlab.wasm ]] || fail "no index.html or app/ in $site"
+# The instructor's copy: each link sets the batched kernel (its app links solutions/kernels/).
+kernel=""
+[[ -d $src/solutions/kernels ]] && kernel="&amp;set=solver.kernel=batched"
 for s in "$src"/scenes/*.json; do
   n=$(basename "$s" .json)
-  grep -qF "href=\"app/index.html?scene=$n\"" "$site/index.html" || fail "index.html: no link to the demo $n"
+  grep -qF "href=\"app/index.html?scene=$n$kernel\"" "$site/index.html" || fail "index.html: no link to the demo $n"
 done
 for d in "$src"/exercises/[0-9][0-9]_*/; do
   n=$(basename "$d")

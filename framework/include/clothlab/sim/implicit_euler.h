@@ -54,7 +54,7 @@ void addSpringJacobians(const std::vector<Spring>& springs, const Matrix3X& x, c
 
 /// How ImplicitEulerSolver solves its linear system A Δv = b.
 enum class ImplicitSolve {
-    Auto,                  ///< Cholesky up to 1500 unknowns, above BlockCg (the default)
+    Auto,                  ///< Cholesky up to 300 unknowns, above BlockCg (the default)
     Cholesky,              ///< sparse LDLᵀ (Eigen::SimplicialLDLT), pattern analysed once, factorised every step
     /// Conjugate gradients on the 3x3 spring blocks without an assembled matrix: (A x)_i =
     /// (m_i + Δt c) x_i + Σ_s B_s (x_i − x_j) per particle, block-Jacobi preconditioner (the inverse
@@ -69,8 +69,8 @@ public:
     /// One step (formula in the file comment). Pinned particles (w = 0) keep their velocity and are
     /// left out of the system. The forces f(x, v) come from `force` (all force passes of the scene);
     /// the Jacobian from the springs and the global damping c (\f$ \partial f_i/\partial v_i \mathrel{+}= -c I \f$).
-    /// The system matrix is symmetric positive definite, assembled in 3x3 blocks. Up to 1500 unknowns
-    /// (500 free particles) it is solved by a sparse Cholesky factorisation (Eigen::SimplicialLDLT:
+    /// The system matrix is symmetric positive definite, assembled in 3x3 blocks. Up to 300 unknowns
+    /// (100 free particles) it is solved by a sparse Cholesky factorisation (Eigen::SimplicialLDLT:
     /// exact, robust for extreme stiffness and mass ratios; pattern analysed once); above, where the
     /// factor fills in and costs seconds per step, by conjugate gradients on the 3x3 blocks of the
     /// springs (ImplicitSolve::BlockCg), started from the previous step's Δv, until the relative
