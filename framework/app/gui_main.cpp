@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
         o.sets = sets;
         o.edges = edges ? 1 : -1;
         o.compare = compare;
+        o.step_beside_drawing = true;
         App app(o);
         int frame = 0, fw = W, fh = H;
         auto t0 = std::chrono::steady_clock::now();
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
             app.frame(fw, fh);
             ImGui::Render();
             imguiGlRender(ImGui::GetDrawData());
+            app.endFrame();
             if (!screenshot.empty() && frame + 1 == frames) {
                 glReadBuffer(GL_BACK);
                 writePng(screenshot, readPixels(fw, fh));

@@ -226,6 +226,7 @@ int runGui(const GuiArgs& a) {
     o.sets = a.sets;
     o.compare = a.compare;
     o.timing = a.timings;
+    o.step_beside_drawing = true;  // as the window app (with --timings each part in turn)
     o.cpu_clock = cpuSeconds;
     // Offscreen every frame steps all it asks for: a screenshot after N frames shows t = N / display fps,
     // whatever the machine's load; --app-budget steps as the window does (docs/performance.md).
@@ -243,6 +244,7 @@ int runGui(const GuiArgs& a) {
         const auto r0 = Clock::now();
         const double c = cpuSeconds();
         gui.end();
+        app.endFrame();
         glFinish();
         imgui_ms += 1e3 * seconds(r0, Clock::now());
         imgui_cpu += 1e3 * (cpuSeconds() - c);

@@ -308,6 +308,7 @@ void App::guarded(const std::function<void()>& step) {
 }
 
 void App::stepOnce() {
+    endFrame();
     if (!cmp_) return;
     guarded([this] {
         for (size_t i = 0; i < cmp_->runs().size(); ++i) cmp_->stepRun(i);
@@ -489,6 +490,7 @@ void App::handleMouse(int width, int height) {
 }
 
 void App::frame(int width, int height) {
+    endFrame();  // the last frame's stepping, if the caller has not waited for it
     width_ = width, height_ = height;
     auto t0 = Clock::now();
     if (frames_ > 0) {  // the last frame: how long it took besides stepping, how fast the runs went
@@ -505,8 +507,8 @@ void App::frame(int width, int height) {
     layout(width, height);
     if (!camera_set_) fitCamera(width, height);
     handleMouse(width, height);
-    // Draw the runs as they are, then step them while the GL draws (llvmpipe rasterizes on its own
-    // threads after the renderer's glFlush()): the picture is one frame behind the panel's numbers.
+    // The panel and the picture show the runs as they are; then the runs step, on a second thread
+    // while the GL draws (AppOptions::step_beside_drawing, until endFrame()), else here.
     const auto cpu = [this] { return options_.timing && options_.cpu_clock ? 1e3 * options_.cpu_clock() : 0.0; };
     double c0 = cpu();
     t0 = Clock::now();
@@ -514,18 +516,36 @@ void App::frame(int width, int height) {
     for (size_t i = 0; i < views_.size(); ++i) shown.push_back(drawData(i));
     timings_.draw_data += msSince(t0);
     t0 = Clock::now();
+    c0 = cpu();
+    panel(width, height);
+    if (compareMode()) {
+        comparePlots(width, height);
+        drawLabels();
+    } else {
+        label_boxes_.clear();
+        drawOverlay(shown.front(), view_, 360.0f);
+    }
+    timings_.panel += msSince(t0);
+    timings_.cpu_panel += cpu() - c0;
+    const double frame_seconds = std::min(1.0 / 20, static_cast<double>(ImGui::GetIO().DeltaTime));
+    asked_ = speed_ * frame_seconds;
+    if (playing_) wave_t_ += frame_seconds;
+    const auto step = [this, frame_seconds, cpu] {
+        const double c = cpu();
+        const auto start = Clock::now();
+        advance(frame_seconds);
+        simulate_ms_ = msSince(start);
+        timings_.simulate += simulate_ms_;
+        timings_.cpu_simulate += cpu() - c;
+    };
+    if (options_.step_beside_drawing && !options_.timing) stepping_ = std::async(std::launch::async, step);
+    else step();
+    c0 = cpu();
+    t0 = Clock::now();
     if (compareMode()) renderer_.clear(width, height);  // between and beside the views too
     for (size_t i = 0; i < views_.size(); ++i) renderer_.draw(shown[i], cam_, view_, views_[i], height);
     timings_.draw += msSince(t0);
-    timings_.cpu_draw += cpu() - c0, c0 = cpu();
-    t0 = Clock::now();
-    const double frame_seconds = std::min(1.0 / 20, static_cast<double>(ImGui::GetIO().DeltaTime));
-    asked_ = speed_ * frame_seconds;
-    advance(frame_seconds);
-    if (playing_) wave_t_ += frame_seconds;
-    simulate_ms_ = msSince(t0);
-    timings_.simulate += simulate_ms_;
-    timings_.cpu_simulate += cpu() - c0;
+    timings_.cpu_draw += cpu() - c0;
     if (save_view_) {
         // The 3-D views without the panel, as drawn just now.
         save_view_ = false;
@@ -547,20 +567,14 @@ void App::frame(int width, int height) {
                     static_cast<int>(height - 16 * scale)},
                    height, panel_rgb);
     if (compareMode()) renderer_.fill(plots_rect_, height, panel_rgb);
-    t0 = Clock::now();
-    c0 = cpu();
-    panel(width, height);
-    if (compareMode()) {
-        comparePlots(width, height);
-        drawLabels();
-    } else {
-        label_boxes_.clear();
-        drawOverlay(shown.front(), view_, 360.0f);
-    }
-    timings_.panel += msSince(t0);
-    timings_.cpu_panel += cpu() - c0;
     ++timings_.frames;
 }
+
+void App::endFrame() {
+    if (stepping_.valid()) stepping_.get();
+}
+
+App::~App() { endFrame(); }
 
 void App::resetTimings() {
     timings_ = AppTimings{};

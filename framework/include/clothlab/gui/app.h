@@ -7,6 +7,7 @@
 #pragma once
 #include <chrono>
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <string>
@@ -58,6 +59,11 @@ struct AppOptions {
     /// Wall time a frame may spend stepping, s; 0: what a 30 fps frame leaves after the rest of the last
     /// frames (at least 5 ms, at most 40 ms). A measurement of the cost of real time sets it high.
     double step_budget = 0.0;
+    /// Step the runs on a second thread while the frame draws the views and ImGui (the native apps: the
+    /// simulation and llvmpipe's drawing then share the cores); the caller calls App::endFrame() after
+    /// drawing ImGui's data. false (the browser's page, which has one thread; and with `timing`, whose
+    /// parts are timed one after the other): frame() steps before it returns.
+    bool step_beside_drawing = false;
 };
 
 /// Wall time of the parts of the app's frames, summed since App::resetTimings(), ms.
@@ -98,10 +104,17 @@ public:
     /// @throws InputError for a bad options.compare list
     explicit App(const AppOptions& options);
 
-    /// One frame: advance the runs when playing, handle mouse and keys, draw the 3-D views into the
-    /// current GL context and build the panels. Call between ImGui::NewFrame() and ImGui::Render().
+    /// One frame: handle mouse and keys, build the panels from the runs as they are, draw them into the
+    /// current GL context and advance them when playing (on a second thread with
+    /// AppOptions::step_beside_drawing, until endFrame()). Call between ImGui::NewFrame() and ImGui::Render().
     /// @param width, height  framebuffer size in pixels
     void frame(int width, int height);
+
+    /// Waits until the stepping that frame() started beside the drawing is done (with
+    /// AppOptions::step_beside_drawing; else nothing to wait for). Call after drawing ImGui's data,
+    /// before anything else reads or changes the runs.
+    void endFrame();
+    ~App();
 
     /// Loads a scene file and rebuilds the runs; a bad file leaves a message in the panel.
     /// @param path  scene file
@@ -174,6 +187,7 @@ private:
     std::vector<char> collider_on_;      ///< which of them are active
     std::vector<CompareVariant> variants_;  ///< the runs' labels and solvers (one: no comparison)
     std::unique_ptr<Comparison> cmp_;    ///< the runs
+    std::future<void> stepping_;         ///< the frame's stepping beside the drawing (step_beside_drawing)
     std::vector<Viewport> views_;        ///< where each run is drawn
     Viewport plots_rect_;                ///< compare mode: the plots window below the views
     std::vector<std::pair<Viewport, std::string>> label_boxes_;  ///< each view's label as drawn (status)
