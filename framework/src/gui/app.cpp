@@ -538,7 +538,8 @@ void App::frame(int width, int height) {
         timings_.simulate += simulate_ms_;
         timings_.cpu_simulate += cpu() - c;
     };
-    if (options_.step_beside_drawing && !options_.timing) stepping_ = std::async(std::launch::async, step);
+    // (Not beside a "Save PNG": its error goes to message_, which a failing step writes too.)
+    if (options_.step_beside_drawing && !options_.timing && !save_view_) stepping_ = std::async(std::launch::async, step);
     else step();
     c0 = cpu();
     t0 = Clock::now();
