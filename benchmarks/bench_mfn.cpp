@@ -79,4 +79,17 @@ BENCHMARK_CAPTURE(BM_ImplicitLargeStep, default, ImplicitSolve::Auto)->Arg(64)->
 BENCHMARK_CAPTURE(BM_ImplicitLargeStep, default_2_threads, ImplicitSolve::Auto, 2)->Arg(64)->Arg(128)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_ImplicitLargeStep, cholesky, ImplicitSolve::Cholesky)->Arg(64)->Arg(128)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The lecture scene scenes/mfn_implicit.json (k = 5000 N/m, Δt = 0.01 s) at n x n particles, each
+// linear solver, steps 21-30: where ImplicitSolve::Auto switches from the exact solve to block CG
+// (above 300 unknowns, sim/implicit_euler.cpp).
+static void BM_ImplicitLectureCloth(benchmark::State& st, ImplicitSolve how) {
+    const std::string n = std::to_string(st.range(0));
+    auto sim = makeSimulation(loadScene(CLOTHLAB_SCENES_DIR "/mfn_implicit.json", {"cloth.nx=" + n, "cloth.ny=" + n, "solver.threads=1"}));
+    dynamic_cast<MassSpringSimulation&>(*sim).implicitSolver().setSolve(how);
+    for (int k = 0; k < 20; ++k) sim->step();
+    for (auto _ : st) sim->step();
+}
+BENCHMARK_CAPTURE(BM_ImplicitLectureCloth, cholesky, ImplicitSolve::Cholesky)->Arg(10)->Arg(14)->Arg(20)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ImplicitLectureCloth, block_cg, ImplicitSolve::BlockCg)->Arg(10)->Arg(14)->Arg(20)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 BENCHMARK_MAIN();

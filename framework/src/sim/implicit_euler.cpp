@@ -28,7 +28,7 @@ constexpr double kTolerance = 1e-3;  // relative residual |b − A Δv| / |b| of
 // ImplicitSolve::Auto: the exact solve up to this many unknowns (100 free particles: the springs,
 // chains and small cloths of the stability studies, where it is cheap and robust at extreme stiffness
 // and mass ratios); above, the factor's fill makes it slower than block CG on every cloth measured
-// (mfn_implicit at 10² / 14² / 20² particles: 0.59 / 1.85 / 6.4 ms against 0.29 / 0.50 / 1.8 ms per step).
+// (bench_mfn's ImplicitLectureCloth, docs/performance.md).
 constexpr int kCholeskyMaxUnknowns = 300;
 constexpr int kChunk = 1024;         // particles per partial sum of a dot product (fixed: the same sum on any number of threads)
 
