@@ -4,6 +4,7 @@
 // solver.threads = 0, switching between one and two threads while it runs, gives the serial run's
 // state bit for bit. No test here asserts a speed: benchmarks/threads_under_load.sh shows that.
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <mutex>
 #include <set>
@@ -206,25 +207,36 @@ TEST(Threads, AdaptiveTeamSwitchesOnlyForTheMargin) {
     EXPECT_EQ(team.threads(), 1);
 }
 
-// A probe stops once it cannot win (real units, timed with sleeps; no speed is asserted, only which
-// size the loops got): one thread is current, a loop takes 0.5 ms on one thread and 20 ms on two, so a
-// whole probe of two threads would take 200 ms. Its first loops run on two threads until it has used
-// (1 - kMargin) of one thread's time, then the rest on one thread; the team stays on one thread. When
-// two threads get fast, a probe runs whole and wins.
+// A probe stops once it cannot win (units timed on a made-up clock, setTeamClock(), so the machine's
+// load cannot change which size the loops get): one thread is current, a loop takes 0.5 ms on one
+// thread and 20 ms on two, so a whole probe of two threads would take 200 ms. Its first loops run on
+// two threads until it has used (1 - kMargin) of one thread's time, then the rest on one thread; the
+// team stays on one thread. When two threads get fast, a probe runs whole and wins.
+namespace {
+std::chrono::steady_clock::time_point madeUpNow{};  // the made-up clock's time
+std::chrono::steady_clock::time_point madeUpClock() { return madeUpNow; }
+struct MadeUpClock {
+    MadeUpClock() { setTeamClock(madeUpClock); }
+    ~MadeUpClock() { setTeamClock(nullptr); }
+};
+}  // namespace
+
 TEST(Threads, AProbeStopsOnceItCannotWinAndRunsWholeWhenItWins) {
     const DefaultThreads two(2);
+    const MadeUpClock clock;
     AdaptiveTeam team(0);
     drive(team, 200, [](int size) { return size == 1 ? 0.010 : 0.100; });  // made up: T̄ = 10 ms on one thread
     ASSERT_EQ(team.threads(), 1);
     const long switches = team.switches();
-    // One unit of 10 loops; returns how many of them got two threads.
+    // One unit of 10 loops, each advancing the made-up clock; returns how many of them got two threads.
     const auto unit = [&](double msOnOne, double msOnTwo) {
         const auto u = team.unit();
         int onTwo = 0;
         for (int k = 0; k < 10; ++k) {
             const bool both = teamThreads(2) == 2;
             onTwo += both;
-            std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(both ? msOnTwo : msOnOne));
+            madeUpNow += std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                std::chrono::duration<double, std::milli>(both ? msOnTwo : msOnOne));
         }
         return onTwo;
     };
@@ -238,7 +250,7 @@ TEST(Threads, AProbeStopsOnceItCannotWinAndRunsWholeWhenItWins) {
         }
         ++probes;
         EXPECT_GE(onTwo, 1) << "the probe starts on two threads";
-        EXPECT_LE(onTwo, 3) << "the probe went on after it could no longer win (a loop on two threads takes 20 ms, one thread's whole unit about 5–10 ms)";
+        EXPECT_EQ(onTwo, 1) << "the probe went on after it could no longer win (a loop on two threads takes 20 ms, one thread's whole unit 5 ms)";
         EXPECT_EQ(team.threads(), 1) << "the probe lost";
     }
     EXPECT_EQ(probes, 2) << "probes come at least every kLongestInterval units";

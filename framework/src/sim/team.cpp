@@ -129,6 +129,13 @@ private:
 
 thread_local int teamCap = INT_MAX;  // the innermost TeamCap of this thread
 std::atomic<int> defaultOverride{0};  // setDefaultThreads()
+std::atomic<TeamClock> unitClock{nullptr};  // setTeamClock()
+
+/// Now, on the clock that times units and probes (setTeamClock()).
+Clock::time_point unitNow() {
+    const TeamClock now = unitClock.load();
+    return now ? now() : Clock::now();
+}
 
 /// The probe running on this thread (an AdaptiveTeam::Unit), as teamThreads() sees it: its loops use
 /// `size` threads until `until`, then `fallback` (the current size); it counts them.
@@ -152,7 +159,7 @@ int teamThreads(int threads) {
     if (ProbeLimit& p = probeLimit; p.active) {
         ++p.loops;
         if (p.cutAt == Clock::time_point{}) {
-            if (const auto now = Clock::now(); now < p.until) ++p.before;
+            if (const auto now = unitNow(); now < p.until) ++p.before;
             else p.cutAt = now;
         }
         cap = std::min(cap, p.cutAt == Clock::time_point{} ? p.size : p.fallback);
@@ -183,6 +190,8 @@ int defaultThreads() {
 }
 
 void setDefaultThreads(int threads) { defaultOverride.store(std::max(0, threads)); }
+
+void setTeamClock(TeamClock now) { unitClock.store(now); }
 
 AdaptiveTeam::AdaptiveTeam(int requested) {
     size_[1] = requested > 0 ? requested : defaultThreads();
@@ -231,7 +240,7 @@ AdaptiveTeam::Unit::Unit(AdaptiveTeam& team)
     : team_(team),
       probe_(team.adaptive_ && team.probing_ && team.counted_[team.now_] > 0 && !probeLimit.active),  // a probe with a time to beat
       cap_(probe_ ? team.most() : team.threads()),  // a probe's loops: probeLimit
-      start_(Clock::now()) {
+      start_(unitNow()) {
     if (!probe_) return;
     const double beat = (1.0 - kMargin) * team.mean_[team.now_];  // the time a probe must beat, s
     probeLimit = {true, team.threads(), team.size_[team.now_],
@@ -239,7 +248,7 @@ AdaptiveTeam::Unit::Unit(AdaptiveTeam& team)
 }
 
 AdaptiveTeam::Unit::~Unit() {
-    const auto end = Clock::now();
+    const auto end = unitNow();
     double seconds = std::chrono::duration<double>(end - start_).count();
     if (probe_) {
         const ProbeLimit p = std::exchange(probeLimit, ProbeLimit{});

@@ -74,6 +74,14 @@ int defaultThreads();
 /// @param threads  ≥ 0
 void setDefaultThreads(int threads);
 
+/// The clock that times AdaptiveTeam's units and probes: returns now.
+using TeamClock = std::chrono::steady_clock::time_point (*)();
+
+/// Sets the clock that times AdaptiveTeam's units and probes from now on, in this process (nullptr:
+/// std::chrono::steady_clock::now, the default). For tests that drive a team with made-up times.
+/// @param now  the clock, or nullptr
+void setTeamClock(TeamClock now);
+
 /// The team size of one solver: fixed (`solver.threads: N`, N ≥ 1) or, for the default
 /// `solver.threads: 0`, chosen between 1 and m = defaultThreads() threads by timing.
 ///
