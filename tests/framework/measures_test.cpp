@@ -137,7 +137,8 @@ TEST(PassTimer, NestedScopesBookSelfTime) {
     EXPECT_GE(p[1].seconds, 0.030);
     EXPECT_GE(p[0].seconds, 0.020);
     EXPECT_LT(p[0].seconds, total - p[1].seconds + 1e-9) << "the inner 30 ms must not be booked on the outer pass";
-    EXPECT_NEAR(p[0].seconds + p[1].seconds, total, 1e-3) << "the passes add up to the wall time";
+    EXPECT_LE(p[0].seconds + p[1].seconds, total) << "the passes add up to at most the wall time";
+    EXPECT_GE(p[0].seconds + p[1].seconds, 0.050) << "the passes add up to at least the 50 ms slept in them";
 }
 
 // A step the method cannot take is reported as unstable with its reason, never as NaN.
