@@ -3,7 +3,7 @@
 # them into the programs. They are solved exercises, so they live in solutions/kernels/ and the
 # student copy (./lab release) has none: there, solver.kernel allows only "exercise".
 #
-# clothlab_kernels: the batched distance and bending kernels (solver.kernel "batched"). An OBJECT library,
+# clothlab_kernels: the batched distance and bending kernels and self-collision pairs (solver.kernel "batched"). An OBJECT library,
 # so that its registering static initialiser is linked into every program that links it.
 # Compiled for speed: vector loops (`#pragma omp simd`), the blocks of a colour group on all cores
 # (`#pragma omp parallel for`, OpenMP), sqrt without errno.
@@ -16,6 +16,7 @@ endif()
 add_library(clothlab_kernels OBJECT
   "${PROJECT_SOURCE_DIR}/solutions/kernels/bending_batched.cpp"
   "${PROJECT_SOURCE_DIR}/solutions/kernels/distance_batched.cpp"
+  "${PROJECT_SOURCE_DIR}/solutions/kernels/neighbour_pairs_batched.cpp"
   "${PROJECT_SOURCE_DIR}/solutions/kernels/register_batched.cpp")
 target_include_directories(clothlab_kernels PUBLIC "${PROJECT_SOURCE_DIR}/solutions/kernels")
 target_link_libraries(clothlab_kernels PUBLIC clothlab_headers)

@@ -1,10 +1,11 @@
 // Registers the batched kernels as the solver's constraint kernel "batched" (solver.kernel:
 // "batched"; see framework/include/clothlab/sim/kernel_registry.h): distance_batched.h for the distance
-// links, bending_batched.h for the bending stencils.
+// links, bending_batched.h for the bending stencils, neighbour_pairs_batched.h for the self-collision pairs.
 // Linked into the programs by cmake/extensions.cmake, only where solutions/kernels/ exists.
 #include "bending_batched.h"
 #include "clothlab/sim/kernel_registry.h"
 #include "distance_batched.h"
+#include "neighbour_pairs_batched.h"
 
 namespace clothlab {
 namespace {
@@ -23,6 +24,7 @@ const bool registered = [] {
                 projectBendingBlocksXpbd(b, w, alphaTilde, lambda, p);
             });
     };
+    kernel.neighbourPairs = neighbourPairsBatched;
     registerSweepKernel("batched", kernel);
     return true;
 }();

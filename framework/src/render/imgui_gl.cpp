@@ -126,6 +126,7 @@ void imguiGlRender(ImDrawData* data) {
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
+    glFlush();  // llvmpipe rasterizes on its own threads from here, while the caller waits for the stepping (App::endFrame())
 }
 
 void imguiGlShutdown() {

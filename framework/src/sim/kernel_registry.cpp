@@ -1,5 +1,6 @@
 #include "clothlab/sim/kernel_registry.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -52,6 +53,13 @@ ConstraintSweep makeDistanceSweep(const std::string& name, const std::vector<Dis
 
 ConstraintSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils, const SweepPlan& plan) {
     return makeSweep(name, &SweepKernel::bending, stencils, plan, projectBendingSweep, projectBendingSweepXpbd);
+}
+
+NeighbourSearch makeNeighbourSearch(const std::string& name) {
+    if (const SweepKernel* kernel = findKernel(name); kernel && kernel->neighbourPairs) return kernel->neighbourPairs;
+    return [](const Matrix3X& p, double d) {  // exercises 7.3 and 7.4
+        return findNeighbourPairs(p, buildSpatialHash(p, d, 2 * std::max<int>(1, static_cast<int>(p.cols()))), d);
+    };
 }
 
 }  // namespace clothlab

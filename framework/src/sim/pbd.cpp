@@ -82,6 +82,7 @@ PbdSimulation::PbdSimulation(const Scene& scene) : Simulation(scene) {
         pass_.hash = timer_.add("self-collision: hash and pairs");
         pass_.self = timer_.add("constraints: self-collision");
         rest_ = P_.x;
+        neighbourPairs_ = makeNeighbourSearch(sv.kernel);  // "exercise": exercises 7.3 and 7.4
     }
     if (uses_.colliders || uses_.selfCollision)
         callbacks_.generateCollisionConstraints = [this](const Matrix3X& x, const Matrix3X& p) {
@@ -160,12 +161,12 @@ void PbdSimulation::generateCollisions(const Matrix3X& x, const Matrix3X& p) {
 void PbdSimulation::findSelfCollisions(const Matrix3X& p) {
     auto timed = timer_.time(pass_.hash);
     const double h = scene_.self_collision.thickness;
-    const int tableSize = 2 * std::max(1, P_.size());
     selfPairs_.clear();
-    // Pairs within 1.25 h: a margin of h/4 for the motion during the iterations (exercises 7.3, 7.4).
-    // Pairs closer than h at rest are the cloth's own neighbours, left to its distance constraints.
+    // Pairs within 1.25 h: a margin of h/4 for the motion during the iterations (exercises 7.3, 7.4:
+    // the spatial hash of 2N buckets, then the pairs). Pairs closer than h at rest are the cloth's own
+    // neighbours, left to its distance constraints.
     const double query = 1.25 * h;
-    for (const ParticlePair& q : findNeighbourPairs(p, buildSpatialHash(p, query, tableSize), query)) {
+    for (const ParticlePair& q : neighbourPairs_(p, query)) {
         if (P_.w[q.i] <= 0.0 && P_.w[q.j] <= 0.0) continue;
         if ((rest_.col(q.i) - rest_.col(q.j)).squaredNorm() < h * h) continue;
         selfPairs_.push_back(q);
@@ -232,11 +233,23 @@ double PbdSimulation::maxPenetration() const {
 
 double PbdSimulation::minPairDistance() const {
     const double h = scene_.self_collision.thickness;
-    double m2 = INFINITY;
-    for (int i = 0; i < P_.size(); ++i)
-        for (int j = i + 1; j < P_.size(); ++j)
-            if ((rest_.col(i) - rest_.col(j)).squaredNorm() >= h * h) m2 = std::min(m2, (P_.x.col(i) - P_.x.col(j)).squaredNorm());
-    return std::sqrt(m2);
+    const int n = P_.size();
+    Eigen::Index axis = 0;  // the axis of the largest extent
+    (P_.x.rowwise().maxCoeff() - P_.x.rowwise().minCoeff()).maxCoeff(&axis);
+    std::vector<double> key(static_cast<size_t>(n));  // the coordinate along it (NaN: +inf, last, never compared)
+    for (int i = 0; i < n; ++i) key[i] = std::isnan(P_.x(axis, i)) ? INFINITY : P_.x(axis, i);
+    std::vector<int> order(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
+    double m2 = INFINITY, m = INFINITY;
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1, i = order[a]; b < n; ++b) {
+            const int j = order[b];
+            if (key[j] - key[i] >= m) break;  // every later j is further apart along the axis alone
+            if ((rest_.col(i) - rest_.col(j)).squaredNorm() < h * h) continue;
+            if (const double d2 = (P_.x.col(i) - P_.x.col(j)).squaredNorm(); d2 < m2) m2 = d2, m = std::sqrt(d2);
+        }
+    return m;
 }
 
 void PbdSimulation::addMetrics(std::vector<Metric>& m) const {

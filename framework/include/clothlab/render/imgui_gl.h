@@ -21,7 +21,8 @@ void imguiGlInit();
 void imguiGlNewFrame();
 
 /// Draws the frame's draw lists into the current framebuffer (blended, clipped to each command's
-/// rectangle); leaves blending, the scissor test and the program off.
+/// rectangle); leaves blending, the scissor test and the program off. Ends with glFlush(), not
+/// glFinish(): the GL may still be drawing when it returns.
 /// @param data  ImGui::GetDrawData() after ImGui::Render()
 void imguiGlRender(ImDrawData* data);
 

@@ -3,8 +3,8 @@
 ///
 /// The solver's default constraint passes are projectDistanceSweep() and projectBendingSweep():
 /// exercises 4.3 and 5.2 once per constraint, in the order the solver chose (the student's or the
-/// reference code). A faster kernel with the same result (vectorised sweeps, say) registers itself
-/// here under a name; a scene selects it with `solver.kernel`. The framework never names such a
+/// reference code); its self-collision pairs are exercises 7.3 and 7.4. A faster kernel with the same
+/// result (vectorised sweeps, say) registers itself here under a name; a scene selects it with `solver.kernel`. The framework never names such a
 /// kernel: the instructor build links it (cmake/extensions.cmake), the student copy does not, and
 /// there only "exercise" is allowed.
 #pragma once
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "clothlab/exercise/05_bending.h"
+#include "clothlab/exercise/07_self_collision.h"
 #include "clothlab/sim/sweeps.h"
 
 namespace clothlab {
@@ -49,13 +50,18 @@ ConstraintSweep sweepOver(Data data, Pbd pbd, Xpbd xpbd) {
     return sweep;
 }
 
+/// A search for the self-collision pairs (stage 07): every pair of particles closer than d, each once
+/// as (i, j) with i < j, in any order, given the positions p (3 x N, m) and d (m).
+using NeighbourSearch = std::function<std::vector<ParticlePair>(const Matrix3X& p, double d)>;
+
 /// A kernel: what makes its sweeps for a list of constraints, projected in the given order, with
-/// their colour groups and threads (a factory may precompute whatever it needs from them once). The
-/// result must not depend on the number of threads. An empty factory leaves that constraint type
-/// to the exercise's sweep.
+/// their colour groups and threads (a factory may precompute whatever it needs from them once), and
+/// its search for the self-collision pairs. The result must not depend on the number of threads. An
+/// empty member leaves that part to the exercises.
 struct SweepKernel {
     std::function<ConstraintSweep(const std::vector<DistanceLink>& links, const SweepPlan& plan)> distance;  ///< distance links
     std::function<ConstraintSweep(const std::vector<BendingStencil>& stencils, const SweepPlan& plan)> bending;  ///< bending stencils
+    NeighbourSearch neighbourPairs;  ///< the self-collision pairs (exercises 7.3 and 7.4's result)
 };
 
 /// Registers a kernel under `name` (call once, e.g. from a static initialiser of the kernel's file).
@@ -83,5 +89,12 @@ ConstraintSweep makeDistanceSweep(const std::string& name, const std::vector<Dis
 /// @return          the sweep
 /// @throws std::out_of_range for a name nobody registered (scene loading rejects those first)
 ConstraintSweep makeBendingSweep(const std::string& name, const std::vector<BendingStencil>& stencils, const SweepPlan& plan);
+
+/// The self-collision pair search of kernel `name`: for "exercise" (or a kernel without one)
+/// exercises 7.3 and 7.4, findNeighbourPairs(p, buildSpatialHash(p, d, T), d) with T = 2N buckets.
+/// @param name  "exercise" or a registered name
+/// @return      the search
+/// @throws std::out_of_range for a name nobody registered (scene loading rejects those first)
+NeighbourSearch makeNeighbourSearch(const std::string& name);
 
 }  // namespace clothlab

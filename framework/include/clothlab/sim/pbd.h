@@ -50,7 +50,9 @@ public:
     /// Deepest violation of a collision constraint over particles and colliders, max(0, h − dist), m.
     double maxPenetration() const;
     /// The closest distance between two particles that are at least h apart at rest (h =
-    /// self_collision.thickness), m; brute force over all N(N − 1)/2 pairs, independent of stage 07.
+    /// self_collision.thickness), m: \f$ \min_{|X_i - X_j| \ge h} |x_i - x_j| \f$, exact, independent
+    /// of stage 07 (sort and sweep along the axis of the largest extent: a pair further apart than the
+    /// closest found so far along that axis is not compared). Pairs with a NaN coordinate are left out.
     double minPairDistance() const;
     /// The distance constraints (empty unless constraints.distance is enabled), in projection order.
     const std::vector<DistanceLink>& distanceLinks() const { return links_; }
@@ -102,6 +104,7 @@ private:
     double kDistance_ = 1.0, kBending_ = 1.0;    ///< per-iteration PBD stiffness k'
     Matrix3X rest_;                              ///< rest positions X (self-collision: which pairs are neighbours)
     std::vector<ParticlePair> selfPairs_;        ///< self-collision pairs of the current step (separation distance h)
+    NeighbourSearch neighbourPairs_;             ///< finds them: exercises 7.3 and 7.4, or solver.kernel's (kernel_registry.h)
     bool firstIteration_ = false;                ///< the next projectConstraints() is a step's first
     Matrix3X before_;                            ///< p before a pass (checkMomentum)
     /// What the scene uses; nothing else runs or is timed (a scene names only what it needs).
