@@ -6,7 +6,8 @@
 #    (default 100): the sum of the simulation's pass times per step (Simulation::timer(), what the run
 #    report's "passes that ran" lists), native on one thread (solver.threads=1, BUILD_DIR/bin/clothlab)
 #    and in headless chromium (WebAssembly, one thread, -msimd128; ?steps=N), and their ratio.
-#    The simulation's time per displayed frame of 1/60 s follows: the step time x (1/60 s) / dt.
+#    The simulation's time per displayed frame of 1/60 s follows: the step time x (1/60 s) / dt; then
+#    each pass of the step (the run report's "passes that ran", the page's app.runs[0].passes).
 # 2. The app's frame in the browser, playing in real time for 10 s (?timing=1; the last kernel above): the simulation's time per
 #    displayed frame (app.timings_ms.simulate), the drawing's and the panel's, and the frame rate. In
 #    headless chromium without a GPU (SwiftShader renders WebGL on the CPU) drawing dominates and says
@@ -31,15 +32,22 @@ dt=$(jq -r '.solver.dt' scenes/pbd_sphere.json)
 kernels=(exercise)
 [[ -d solutions/kernels ]] && kernels+=(batched)
 for kernel in "${kernels[@]}"; do
-  native=$("${CLOTHLAB_NATIVE:-$build/bin/clothlab}" run scenes/pbd_sphere.json --set cloth.nx=64 --set cloth.ny=64 --set solver.threads=1 \
-             --set solver.kernel="$kernel" --steps "$steps" --quiet 2>&1 \
-           | awk '/^passes that ran/ { on = 1; next } on && / s +[0-9]+ calls/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "s") { t += $i; break } } END { printf "%.3f", 1000 * t }')
+  # the native run's passes, one "NAME<tab>SECONDS" line each (its report's "passes that ran")
+  "${CLOTHLAB_NATIVE:-$build/bin/clothlab}" run scenes/pbd_sphere.json --set cloth.nx=64 --set cloth.ny=64 --set solver.threads=1 \
+      --set solver.kernel="$kernel" --steps "$steps" --quiet 2>&1 \
+    | awk '/^passes that ran/ { on = 1; next } on && / s +[0-9]+ calls/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "s") break
+          name = $1; for (j = 2; j < i; ++j) name = name " " $j; print name "\t" $i }' >"$tmp/native.tsv"
+  native=$(awk -F'\t' '{ t += $2 } END { printf "%.3f", 1000 * t }' "$tmp/native.tsv")
   python3 tests/web/page_run.py "http://127.0.0.1:$port/index.html?scene=pbd_sphere&$set64&set=solver.kernel=$kernel&steps=$steps" \
     --seconds 300 --until-done >"$tmp/steps.json"
   web=$(jq -r --argjson n "$steps" '.app.runs[0].wall * 1000 | . * 1000 | round / 1000' "$tmp/steps.json")
   awk -v n="$steps" -v a="$native" -v b="$web" -v dt="$dt" -v k="$kernel" 'BEGIN {
     printf "pbd_sphere 64x64, %d steps, kernel %s: native %.2f ms per step (1 thread), browser %.2f ms per step, ratio %.2f\n", n, k, a / n, b / n, b / a
     printf "  simulation per 1/60 s frame (%.3f steps of dt = %g s; real time needs <= 16.7 ms): browser %.1f ms, native %.1f ms\n", 1 / (60 * dt), dt, b / n / (60 * dt), a / n / (60 * dt) }'
+  # per pass: browser and native ms per step (the page's app.runs[0].passes, the same pass names)
+  jq -r '.app.runs[0].passes | to_entries[] | "\(.key)\t\(.value)"' "$tmp/steps.json" >"$tmp/web.tsv"
+  awk -F'\t' -v n="$steps" 'NR == FNR { native[$1] = $2; next }
+      { printf "    %-32s browser %6.2f ms, native %6.2f ms per step\n", $1, 1000 * $2 / n, 1000 * native[$1] / n }' "$tmp/native.tsv" "$tmp/web.tsv"
 done
 python3 tests/web/page_run.py "http://127.0.0.1:$port/index.html?scene=pbd_sphere&$set64&set=solver.kernel=$kernel&timing=1" --seconds 10 >"$tmp/play.json"
 jq -r --arg k "$kernel" '"pbd_sphere 64x64 playing 10 s, kernel \($k): simulation \(.app.timings_ms.simulate * 10 | round / 10) ms per frame, drawing \(.app.timings_ms.draw * 10 | round / 10) ms, panel \(.app.timings_ms.panel * 10 | round / 10) ms, \(1000 / .ms_per_frame * 10 | round / 10) frames per s (SwiftShader), \(.app.realtime * 100 | round / 100) x real time"' "$tmp/play.json"

@@ -82,33 +82,33 @@ constexpr AtanCoefficients kAtan;
     const double L2 = m2x * m2x + m2y * m2y + m2z * m2z;
     const double D = m1x * m2x + m1y * m2y + m1z * m2z;
     // S = |m1 x m2| = |a.(b x c)| |a|
-    const double vol = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
-    const double S2 = vol * vol * (ax * ax + ay * ay + az * az);
-    const double S = std::sqrt(S2);
+    const double A = ax * ax + ay * ay + az * az, ab = ax * bx + ay * by + az * bz, ac = ax * cx + ay * cy + az * cz;
+    const double vol = m1x * cx + m1y * cy + m1z * cz;  // a.(b x c) = (a x b).c
+    const double la = std::sqrt(A);
+    const double S = std::fabs(vol) * la, S2 = vol * vol * A;
     const double phi = angleUpper(S, D);
-    // E1 = L1 m2 − D m1, E2 = L2 m1 − D m2
-    const double e1x = L1 * m2x - D * m1x, e1y = L1 * m2y - D * m1y, e1z = L1 * m2z - D * m1z;
-    const double e2x = L2 * m1x - D * m2x, e2y = L2 * m1y - D * m2y, e2z = L2 * m1z - D * m2z;
-    // Q3 = L2 E1 x a, Q4 = L1 E2 x a, Q2 = L2 b x E1 + L1 c x E2, Q1 = −Q2 − Q3 − Q4
-    const double q3x = L2 * (e1y * az - e1z * ay), q3y = L2 * (e1z * ax - e1x * az), q3z = L2 * (e1x * ay - e1y * ax);
-    const double q4x = L1 * (e2y * az - e2z * ay), q4y = L1 * (e2z * ax - e2x * az), q4z = L1 * (e2x * ay - e2y * ax);
-    const double q2x = L2 * (by * e1z - bz * e1y) + L1 * (cy * e2z - cz * e2y);
-    const double q2y = L2 * (bz * e1x - bx * e1z) + L1 * (cz * e2x - cx * e2z);
-    const double q2z = L2 * (bx * e1y - by * e1x) + L1 * (cx * e2y - cy * e2x);
+    // G_j = ∇_j φ · L1 L2 |a| · sign(vol): G3 = −A L2 m1, G4 = A L1 m2, G1 = (A − a·b) L2 m1 − (A − a·c) L1 m2,
+    // G2 = (a·b) L2 m1 − (a·c) L1 m2 (bending_batched.h)
+    const double u1x = L2 * m1x, u1y = L2 * m1y, u1z = L2 * m1z;  // L2 m1
+    const double u2x = L1 * m2x, u2y = L1 * m2y, u2z = L1 * m2z;  // L1 m2
+    const double q3x = -A * u1x, q3y = -A * u1y, q3z = -A * u1z;
+    const double q4x = A * u2x, q4y = A * u2y, q4z = A * u2z;
+    const double q2x = ab * u1x - ac * u2x, q2y = ab * u1y - ac * u2y, q2z = ab * u1z - ac * u2z;
     const double q1x = -q2x - q3x - q4x, q1y = -q2y - q3y - q4y, q1z = -q2z - q3z - q4z;
     const double w1 = w[j1], w2 = w[j2], w3 = w[j3], w4 = w[j4];  // loaded late: fewer live registers
     const double Dn = w1 * (q1x * q1x + q1y * q1y + q1z * q1z) + w2 * (q2x * q2x + q2y * q2y + q2z * q2z) +
                       w3 * (q3x * q3x + q3y * q3y + q3z * q3z) + w4 * (q4x * q4x + q4y * q4y + q4z * q4z);
     const double LL = L1 * L2;
-    // PBD (α̃ = 0): f = k C L1L2 S/Σw|Q|²; XPBD (k = 1): f = (C + α̃λ) L1L2 S/(Σw|Q|² + α̃ (L1L2 S)²), Δλ = −f L1L2 S
-    const double LLS = LL * S;
-    double f = (k * (phi - phi0) + alphaTilde * lambda) * LLS / (Dn + alphaTilde * LLS * LLS);
+    // σ = L1 L2 |a|, the G's scale. PBD (α̃ = 0): f = −sign(vol) k C σ/Σw|G|²; XPBD (k = 1):
+    // f = −sign(vol) (C + α̃λ) σ/(Σw|G|² + α̃σ²), Δλ = sign(vol) f σ; then Δp_j = f w_j G_j.
+    const double sigma = LL * la, sign = std::copysign(1.0, vol);
+    double f = -sign * (k * (phi - phi0) + alphaTilde * lambda) * sigma / (Dn + alphaTilde * sigma * sigma);
     // The cases without a correction (as in exercise 5.2), as selects, not branches.
-    f = L1 < 1e-24 ? 0.0 : f;                 // zero-area triangle
+    f = L1 < 1e-24 ? 0.0 : f;                      // zero-area triangle
     f = L2 < 1e-24 ? 0.0 : f;
-    f = S2 < 1e-12 * LL ? 0.0 : f;            // flat or folded: 1 − d² < 1e-12
-    f = Dn < 1e-24 * LL * LL * LL ? 0.0 : f;  // all pinned: Σ w_j |q_j|² < 1e-24
-    dLambda = -f * LLS;
+    f = S2 < 1e-12 * LL ? 0.0 : f;                 // flat or folded: sin²φ = S²/(L1 L2) < 1e-12
+    f = S2 * Dn < 1e-24 * LL * LL * LL * A ? 0.0 : f;  // all pinned: Σ w_j |q_j|² = sin²φ Σw|G|²/σ² < 1e-24
+    dLambda = sign * f * sigma;
     const double f1 = f * w1, f2 = f * w2, f3 = f * w3, f4 = f * w4;
     d1x = f1 * q1x, d1y = f1 * q1y, d1z = f1 * q1z;
     d2x = f2 * q2x, d2y = f2 * q2y, d2z = f2 * q2z;

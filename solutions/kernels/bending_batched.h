@@ -7,23 +7,33 @@
 /// solved stage 05, so `./lab release` leaves it out (it lives in solutions/kernels/).
 ///
 /// The formulas are those of exercise 5.2 rewritten so that a projection needs one square root
-/// and two divisions. With positions relative to p1, \f$\vec a=\vec p_2-\vec p_1\f$,
-/// \f$\vec b=\vec p_3-\vec p_1\f$, \f$\vec c=\vec p_4-\vec p_1\f$ and the unnormalised normals
+/// and one division. With positions relative to p1, \f$\vec a=\vec p_2-\vec p_1\f$ (the shared edge),
+/// \f$\vec b=\vec p_3-\vec p_1\f$, \f$\vec c=\vec p_4-\vec p_1\f$, the unnormalised normals
 /// \f$\vec m_1=\vec a\times\vec b\f$, \f$\vec m_2=\vec a\times\vec c\f$
-/// (\f$L_1=|\vec m_1|^2\f$, \f$L_2=|\vec m_2|^2\f$, \f$D=\vec m_1\cdot\vec m_2\f$):
+/// (\f$L_1=|\vec m_1|^2\f$, \f$L_2=|\vec m_2|^2\f$, \f$D=\vec m_1\cdot\vec m_2\f$, \f$A=|\vec a|^2\f$)
+/// and \f$V=\vec a\cdot(\vec b\times\vec c)\f$:
 /// \f[ \varphi=\arccos(\vec n_1\cdot\vec n_2)=\operatorname{atan2}(S, D),\qquad
-///     S=|\vec m_1\times\vec m_2|=|\vec a\cdot(\vec b\times\vec c)|\,|\vec a| \f]
-/// and with \f$\vec E_1=L_1\vec m_2-D\,\vec m_1\f$, \f$\vec E_2=L_2\vec m_1-D\,\vec m_2\f$ the
-/// q-vectors of exercise 5.1 are \f$\vec q_i=\vec Q_i/(L_1L_2)^{3/2}\f$ with
-/// \f[ \vec Q_3=L_2\,\vec E_1\times\vec a,\quad \vec Q_4=L_1\,\vec E_2\times\vec a,\quad
-///     \vec Q_2=L_2\,\vec b\times\vec E_1+L_1\,\vec c\times\vec E_2,\quad \vec Q_1=-\vec Q_2-\vec Q_3-\vec Q_4 \f]
-/// so that the correction of exercise 5.2 becomes
-/// \f[ \Delta\vec p_i=k\,(\varphi-\varphi_0)\,\frac{L_1L_2\,S}{\sum_j w_j|\vec Q_j|^2}\,w_i\vec Q_i. \f]
-/// XPBD (projectBendingXpbd() in sim/xpbd.h) moves along the same vectors: with
-/// \f$\nabla_i C=-\vec q_i/\sin\varphi\f$ and \f$\sum_j w_j|\nabla_j C|^2=\sum_j w_j|\vec Q_j|^2/(L_1L_2S)^2\f$,
-/// \f[ \Delta\vec p_i=f\,w_i\vec Q_i,\qquad f=\frac{(\varphi-\varphi_0+\tilde\alpha\lambda)\,L_1L_2S}{\sum_j w_j|\vec Q_j|^2+\tilde\alpha\,(L_1L_2S)^2},
-///     \qquad \Delta\lambda=-f\,L_1L_2S, \f]
-/// which is the PBD correction with k = 1 for \f$\tilde\alpha = 0\f$.
+///     S=|\vec m_1\times\vec m_2|=|V|\,|\vec a|. \f]
+/// The gradient of φ is the hinge's (Bridson et al., "Simulation of clothing with folds and wrinkles",
+/// 2003): the wing vertices move along their triangle's normal, \f$\nabla_3\varphi=-s\,|\vec a|\,\vec m_1/L_1\f$
+/// and \f$\nabla_4\varphi=s\,|\vec a|\,\vec m_2/L_2\f$ (s = sign V), and the edge's ends share what keeps
+/// the momentum and the angular momentum, split at the wings' feet on the edge
+/// (\f$t_3=\vec a\cdot\vec b/A\f$, \f$t_4=\vec a\cdot\vec c/A\f$):
+/// \f$\nabla_1\varphi=-(1-t_3)\nabla_3\varphi-(1-t_4)\nabla_4\varphi\f$,
+/// \f$\nabla_2\varphi=-t_3\nabla_3\varphi-t_4\nabla_4\varphi\f$. Times \f$\sigma=L_1L_2|\vec a|\f$ and s
+/// they need no division:
+/// \f[ \vec G_3=-A\,L_2\vec m_1,\quad \vec G_4=A\,L_1\vec m_2,\quad
+///     \vec G_2=(\vec a\cdot\vec b)\,L_2\vec m_1-(\vec a\cdot\vec c)\,L_1\vec m_2,\quad \vec G_1=-\vec G_2-\vec G_3-\vec G_4, \f]
+/// \f$\nabla_i\varphi=s\,\vec G_i/\sigma\f$, and the correction of exercise 5.2
+/// (\f$\Delta\vec p_i=-k\,C\,w_i\nabla_iC/\sum_j w_j|\nabla_jC|^2\f$, C = φ − φ0) becomes
+/// \f[ \Delta\vec p_i=f\,w_i\vec G_i,\qquad f=-s\,\frac{k\,(\varphi-\varphi_0)\,\sigma}{\sum_j w_j|\vec G_j|^2}. \f]
+/// XPBD (projectBendingXpbd() in sim/xpbd.h) moves along the same vectors:
+/// \f[ f=-s\,\frac{(\varphi-\varphi_0+\tilde\alpha\lambda)\,\sigma}{\sum_j w_j|\vec G_j|^2+\tilde\alpha\,\sigma^2},
+///     \qquad \Delta\lambda=s\,f\,\sigma, \f]
+/// which is the PBD correction with k = 1 for \f$\tilde\alpha = 0\f$. The cases without a correction are
+/// exercise 5.2's: a zero-area triangle (\f$L_i<10^{-24}\f$), flat or folded
+/// (\f$\sin^2\varphi=S^2/(L_1L_2)<10^{-12}\f$), all pinned (exercise 5.1's q-vectors are
+/// \f$\vec q_i=-\sin\varphi\,\nabla_i\varphi\f$, so \f$\sum_j w_j|\vec q_j|^2=\sin^2\varphi\sum_j w_j|\vec G_j|^2/\sigma^2<10^{-24}\f$).
 #pragma once
 #include <vector>
 

@@ -1062,7 +1062,12 @@ std::string App::statusJson() const {
             x["label_box"] = {b.x, b.y, b.width, b.height};
             x["label_text"] = label_boxes_[i].second;
         }
-        if (r.sim) x["t"] = r.sim->state().t;
+        if (r.sim) {
+            x["t"] = r.sim->state().t;
+            x["passes"] = json::object();  // where its steps' time went: pass name → wall time, s
+            for (const PassTimer::Pass& p : r.sim->timer().passes())
+                if (p.calls > 0) x["passes"][p.name] = p.seconds;
+        }
         if (!r.samples.empty()) {
             const CompareSample& s = r.samples.back();
             const auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
