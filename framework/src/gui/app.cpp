@@ -695,7 +695,9 @@ void App::panelScene() {
         ImGui::TextWrapped("%s, %s", count(static_cast<size_t>(sim->state().size()), "particle", "particles").c_str(),
                            count(sim->edges().size(), constraints ? "constraint edge" : "spring", constraints ? "constraint edges" : "springs").c_str());
         const CompareRun& r = cmp_->runs().front();
-        ImGui::Text("step %s", duration(r.samples.empty() ? NAN : r.samples.back().step_ms).c_str());
+        const std::string& kernel = r.scene.solver.kernel;  // a registered faster kernel (sim/kernel_registry.h): say so
+        ImGui::Text("step %s%s", duration(r.samples.empty() ? NAN : r.samples.back().step_ms).c_str(),
+                    constraints && kernel != "exercise" ? (", " + kernel + " kernel").c_str() : "");
     }
     if (!options_.platform_note.empty()) ImGui::TextWrapped("%s", options_.platform_note.c_str());
 }
@@ -1054,7 +1056,7 @@ std::string App::statusJson() const {
     j["runs"] = json::array();
     for (size_t i = 0; cmp_ && i < cmp_->runs().size(); ++i) {
         const CompareRun& r = cmp_->runs()[i];
-        json x = {{"label", r.variant.label}, {"method", methodName(r.variant.solver.method)}, {"color", compareColor(i)},
+        json x = {{"label", r.variant.label}, {"method", methodName(r.variant.solver.method)}, {"kernel", r.scene.solver.kernel}, {"color", compareColor(i)},
                   {"steps", r.steps}, {"wall", r.wall}, {"samples", r.samples.size()}, {"message", r.message}};
         if (i < views_.size()) x["viewport"] = {views_[i].x, views_[i].y, views_[i].width, views_[i].height};
         if (i < label_boxes_.size()) {
