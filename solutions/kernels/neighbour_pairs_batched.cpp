@@ -44,7 +44,7 @@ std::vector<ParticlePair> neighbourPairsBatched(const Matrix3X& p, double d) {
                     const uint32_t b = bucketOf(c, mask);
                     for (int k = start[b]; k < start[b + 1]; ++k) {
                         const int j = entries[k];
-                        if ((own ? j > i : j != i) && cell[j] == c && (p.col(i) - p.col(j)).squaredNorm() < d2)
+                        if ((!own || j > i) && cell[j] == c && (p.col(i) - p.col(j)).squaredNorm() < d2)  // another cell: j ≠ i
                             pairs.push_back({std::min(i, j), std::max(i, j)});
                     }
                 }

@@ -4,9 +4,9 @@
 /// The solver's default constraint passes are projectDistanceSweep() and projectBendingSweep():
 /// exercises 4.3 and 5.2 once per constraint, in the order the solver chose (the student's or the
 /// reference code); its self-collision pairs are exercises 7.3 and 7.4. A faster kernel with the same
-/// result (vectorised sweeps, say) registers itself here under a name; a scene selects it with `solver.kernel`. The framework never names such a
-/// kernel: the instructor build links it (cmake/extensions.cmake), the student copy does not, and
-/// there only "exercise" is allowed.
+/// result (vectorised sweeps, say) registers itself here under a name; a scene selects it with
+/// `solver.kernel`. The framework never names such a kernel: the instructor build links it
+/// (cmake/extensions.cmake), the student copy does not, and there only "exercise" is allowed.
 #pragma once
 #include <functional>
 #include <memory>
