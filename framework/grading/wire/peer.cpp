@@ -95,13 +95,15 @@ uint32_t Peer::addCallback(Handler h, long long particles) {
     return kFirstCallback + static_cast<uint32_t>(callbacks_.size() - 1);
 }
 
-// A message's body: [u64 n][n bytes of CBOR][the byte strings, one after the other]. In the CBOR
-// each byte string is replaced by {"bytes": its length}: nlohmann's CBOR reader takes a byte
-// string byte by byte, which made grading three times slower than one memcpy() per string.
+// A message's body: [u64 n][n bytes of CBOR][the long byte strings, one after the other]. In the
+// CBOR a byte string of kMovedOut bytes or more is replaced by {"bytes": its length}: nlohmann's CBOR
+// reader takes a byte string byte by byte, which made grading three times slower than one memcpy()
+// per string; a short one (a Vec3's 24 bytes) costs less inside than the object in its place.
+constexpr size_t kMovedOut = 256;
 
-/// Moves every byte string of j (depth first, in order) to the end of `tail`.
+/// Moves every long byte string of j (depth first, in order) to the end of `tail`.
 static void moveBytesOut(json& j, std::string& tail) {
-    if (j.is_binary()) {
+    if (j.is_binary() && j.get_binary().size() >= kMovedOut) {
         const auto& b = j.get_binary();
         tail.append(reinterpret_cast<const char*>(b.data()), b.size());
         j = json{{"bytes", b.size()}};
@@ -109,7 +111,7 @@ static void moveBytesOut(json& j, std::string& tail) {
         for (auto& e : j) moveBytesOut(e, tail);
     }
 }
-/// Puts the byte strings back, in the same order, from `tail` (from `at` on).
+/// Puts the moved byte strings back, in the same order, from `tail` (from `at` on).
 static void moveBytesIn(json& j, const std::string& tail, size_t& at) {
     if (j.is_object()) {
         const size_t n = j.at("bytes").get<size_t>();

@@ -1,9 +1,10 @@
 // The values that cross between a graded test process and the submission process (wire/peer.h),
 // as nlohmann::json in its binary form CBOR: a call's arguments are one JSON array, its results
 // another. Each struct that crosses is declared once below with CLOTHLAB_WIRE. Numbers cross bit
-// for bit: a single value as a JSON number (CBOR keeps a double's 64 bits), a matrix as [rows, cols,
-// raw coefficients], and a list of numbers, matrices or flat structs as CBOR byte strings, one per
-// field (a step's thousands of springs in a few memcpy()s, not a JSON value per spring).
+// for bit: a single value as a JSON number (CBOR keeps a double's 64 bits), a fixed-size matrix as a
+// CBOR byte string of its coefficients, a dynamic one as [rows, cols, coefficients], and a list of
+// numbers, matrices or flat structs as byte strings, one per field (a step's thousands of springs in
+// a few memcpy()s, not a JSON value per spring).
 // std::function crosses as a callback id the other side calls back.
 #pragma once
 #include <algorithm>
@@ -207,6 +208,9 @@ template <class E, size_t... I> void columnsFromWire(const json& j, std::vector<
 template <class T> json toWire(const T& v) {
     if constexpr (IsFunction<T>::value) {
         return callbackId(v);
+    } else if constexpr (IsMatrix<T>::value && isBits<T>()) {  // fixed size: its coefficients alone
+        static_assert(bytesAreTheValue<T>(), "a matrix whose bytes are not its coefficients");
+        return bytesOf(v.data(), sizeof(T));
     } else if constexpr (IsMatrix<T>::value) {
         return json::array({v.rows(), v.cols(), bytesOf(v.data(), sizeof(typename T::Scalar) * v.size())});
     } else if constexpr (IsVector<T>::value) {
@@ -233,6 +237,8 @@ template <class T> json toWire(const T& v) {
 template <class T> void fromWire(const json& j, T& v) {
     if constexpr (IsFunction<T>::value) {
         callbackOf(j.get<std::uint32_t>(), v);
+    } else if constexpr (IsMatrix<T>::value && isBits<T>()) {
+        std::memcpy(v.data(), bytesIn(j, 1, sizeof(T)).data(), sizeof(T));
     } else if constexpr (IsMatrix<T>::value) {
         using S = typename T::Scalar;
         const long long rows = j.at(0).get<long long>(), cols = j.at(1).get<long long>();
