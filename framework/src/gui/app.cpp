@@ -327,21 +327,20 @@ void App::advance(double frame_seconds) {
     // The stepping gets what is left of a frame at 30 fps after the rest of the last frames took theirs
     // (at least 5 ms, at most 40 ms): a scene too costly to step in real time runs slower, at 30 fps.
     const double budget = options_.step_budget > 0 ? options_.step_budget : std::clamp((1000.0 / kFrameRate - other_ms_) / 1e3, 0.005, 0.04);
-    // One step may outlast the budget (a step is never cut): the frames after it draw without stepping
-    // until that is paid back, so a scene with long steps still draws at 30 fps, its runs slower.
-    if (debt_ > 0) {
-        debt_ -= budget;
-        return;
-    }
+    // One step may outlast what the frame allows (a step is never cut): the next frames pay the excess
+    // back from their budgets (SteppingDebt), so a scene with long steps still draws at 30 fps, its runs
+    // slower.
+    const double allowed = options_.step_budget > 0 ? budget : debt_.allow(budget);
+    if (allowed <= 0) return;
     const auto start = Clock::now();
     guarded([&] {
-        cmp_->advanceTo(target_t_, budget, [this](CompareRun& r) {
+        cmp_->advanceTo(target_t_, allowed, [this](CompareRun& r) {
             if (grabbed_ < 0 || &r != &cmp_->runs()[static_cast<size_t>(grabbed_run_)]) return;
             r.sim->state().v.col(grabbed_).setZero();
             r.checks.reset();  // the user moving a particle puts energy in and particles anywhere: the checks start again
         });
     });
-    if (options_.step_budget <= 0) debt_ = std::max(0.0, std::chrono::duration<double>(Clock::now() - start).count() - budget);
+    if (options_.step_budget <= 0) debt_.settle(std::chrono::duration<double>(Clock::now() - start).count(), allowed);
     if (!compareMode() && !cmp_->runs().empty() && cmp_->runs().front().message.rfind("unstable", 0) == 0 && message_.empty()) {
         message_ = cmp_->runs().front().message + ": reduce dt or stiffness, then Reset";
         playing_ = false;

@@ -35,6 +35,31 @@ struct StageInfo {
 /// @param spec  the string (stageCode())
 std::vector<StageInfo> parseStageCode(const std::string& spec);
 
+/// The app's stepping against a frame's budget. A step is never cut, so a frame's stepping may
+/// outlast what the frame allows; the excess is a debt the next frames pay back from their budgets:
+/// \f$ a = b - d \f$ may step in a frame with budget b and debt d (none when \f$ a \le 0 \f$: that
+/// frame pays back \f$ d \leftarrow d - b \f$), and after stepping s seconds \f$ d = \max(0, s - a) \f$.
+/// On average a frame then steps for its budget (a frame whose debt is smaller than its budget still
+/// steps for the rest of it).
+struct SteppingDebt {
+    double debt = 0.0;  ///< stepping time beyond the budgets not yet paid back, s
+
+    /// The time this frame may step, s; 0 when the debt takes the whole budget (which it then pays back).
+    /// @param budget  the frame's budget for stepping, s
+    /// @return        the time the frame may step, s (a step may start until it has passed)
+    double allow(double budget) {
+        if (budget > debt) return budget - debt;
+        debt -= budget;
+        return 0.0;
+    }
+    /// Records what a frame stepped (nothing for a frame allowed none: allow() settled it).
+    /// @param spent    the time its steps took, s
+    /// @param allowed  what allow() gave it, s
+    void settle(double spent, double allowed) {
+        if (allowed > 0) debt = spent > allowed ? spent - allowed : 0.0;
+    }
+};
+
 /// Start-up settings of the app.
 struct AppOptions {
     std::string scene;        ///< scene file to open ("" = the first one in scenes_dir)
@@ -221,7 +246,7 @@ private:
     double simulate_ms_ = 0.0;           ///< the last frame's stepping, ms
     double other_ms_ = 0.0;              ///< the rest of a frame (drawing, panel, ImGui, the host), smoothed, ms
     double last_time_ = 0.0;             ///< the runs' simulated time when the last frame began, s
-    double debt_ = 0.0;                  ///< stepping time beyond the budget not yet paid back by frames without steps, s
+    SteppingDebt debt_;                  ///< stepping time beyond the frames' budgets, paid back by the next frames
     double asked_ = 0.0;                 ///< the simulated time the last frame asked the runs to advance, s
     double realtime_ = 1.0;              ///< speed x the fraction of it they advanced, smoothed (the panel says when well below speed)
 };
