@@ -442,7 +442,7 @@ TEST(App, ComparisonRunsTogetherAndExportsOneRowPerRunPerSample) {
 // overran is paid back by the next frames, no more. Steps of a fixed cost, started while the frame's
 // allowance lasts (as Comparison::advanceTo() does): on average a frame steps for its budget, whether a
 // step is shorter than the budget or longer. (Repaying with whole frames without steps, as the app did
-// before, stepped 13.5 ms per 25 ms budget with the 9 ms steps: pbd_self_collision at 0.63 x real time.)
+// before, steps 13.5 ms per 25 ms budget with the 9 ms steps; docs/performance.md has what it cost.)
 TEST(App, SteppingDebtPaysBackWhatAStepOverranAndNoMore) {
     const double budget = 0.025;
     for (const double step : {0.009, 0.060}) {
