@@ -24,7 +24,7 @@ exe=$build/bin/clothlab-render
 [[ -x $exe ]] || exe=$build/bin/clothlab-render-egl
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 echo "load: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores), $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(date -u '+%Y-%m-%d %H:%M UTC')${extra[*]:+, ${extra[*]}}"
-printf '%-20s | %-32s | %-30s\n' "" "real time: wall, CPU per frame" "the app's budget: wall, x real time"
+printf '%-24s | %-32s | %-30s\n' "" "real time: wall, CPU per frame" "the app's budget: wall, x real time"
 row() {  # row NAME ARGS...: one line of the table
   local name=$1 full app rt; shift
   set -- "$@" "${extra[@]}"
@@ -33,7 +33,7 @@ row() {  # row NAME ARGS...: one line of the table
   rt=$(jq -r '.realtime' "$tmp/s.json")
   awk -v n="$name" -v full="$full" -v app="$app" -v rt="$rt" 'function wall(l,  a) { split(l, a, ": "); return a[2] + 0 }
       function cpu(l,  a) { split(l, a, "CPU time "); return a[2] + 0 }
-      BEGIN { printf "%-20s | %6.1f ms %5.1f fps, %5.1f ms | %6.1f ms %5.1f fps, %4.2f x\n", n, wall(full), 1000 / wall(full), cpu(full),
+      BEGIN { printf "%-24s | %6.1f ms %5.1f fps, %5.1f ms | %6.1f ms %5.1f fps, %4.2f x\n", n, wall(full), 1000 / wall(full), cpu(full),
               wall(app), 1000 / wall(app), rt }'
 }
 for s in scenes/*.json; do
