@@ -54,9 +54,9 @@ std::string fileName(const Entry& e, const std::vector<Entry>& all) {
 std::string contentHash(const Entry& e, const std::string& salt) {
     if (!e.archive.empty()) return sha256(salt + readFile(e.path, 256u << 20));
     std::vector<fs::path> files;
-    std::error_code ec;
-    for (fs::recursive_directory_iterator it(e.path, ec), end; !ec && it != end; it.increment(ec))
-        if (it->is_regular_file(ec) && !it->is_symlink(ec)) files.push_back(it->path());
+    forEachEntry(e.path, true, [&](const fs::path& f, const struct stat& st) {
+        if (S_ISREG(st.st_mode)) files.push_back(f);
+    });
     std::sort(files.begin(), files.end());
     std::string all = salt;
     for (const auto& f : files) {
@@ -89,16 +89,16 @@ int collectWriteups(const fs::path& root, const fs::path& to) {
     std::error_code ec;
     fs::remove_all(to, ec);
     int n = 0;
-    for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
-        if (it->is_symlink(ec) || !it->is_regular_file(ec) || it->file_size(ec) > (16u << 20)) continue;
-        const std::string file = it->path().filename().string(), dir = it->path().parent_path().filename().string();
+    forEachEntry(root, true, [&](const fs::path& f, const struct stat& st) {
+        if (!S_ISREG(st.st_mode) || st.st_size > (16 << 20)) return;
+        const std::string file = f.filename().string(), dir = f.parent_path().filename().string();
         const bool writeup = file == "writeup.md" && std::regex_match(dir, std::regex("[0-9][0-9]_.+"));
-        if (!writeup && !(dir == "report" && std::regex_match(file, std::regex("[0-9][0-9]_.+\\.html")))) continue;
+        if (!writeup && !(dir == "report" && std::regex_match(file, std::regex("[0-9][0-9]_.+\\.html")))) return;
         const fs::path dest = to / (writeup ? dir : "") / file;
         std::error_code copied;
         fs::create_directories(dest.parent_path(), copied);
-        n += fs::copy_file(it->path(), dest, fs::copy_options::overwrite_existing, copied) && !copied;
-    }
+        n += fs::copy_file(f, dest, fs::copy_options::overwrite_existing, copied) && !copied;
+    });
     return n;
 }
 

@@ -1,6 +1,8 @@
 // clothlab-grade: what the grader's parts share: results and their totals, points files, files, the
 // cache, a pool of workers, and the red team's test-only switches.
 #pragma once
+#include <sys/stat.h>
+
 #include <atomic>
 #include <filesystem>
 #include <functional>
@@ -67,6 +69,17 @@ StageResult ungradedStage(const fs::path& points_dir, const std::string& stage, 
 
 /// The first n non-empty lines of text, joined with "\n" + indent.
 std::string firstLines(const std::string& text, int n, const std::string& indent = "        ");
+
+/// Calls fn(path, lstat of it) for each entry of `dir` (or of its whole tree), never following a link;
+/// a folder it may not read is skipped.
+template <class Fn> void forEachEntry(const fs::path& dir, bool recursive, Fn fn) {
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec)) {
+        if (!recursive) it.disable_recursion_pending();
+        struct stat st {};
+        if (::lstat(it->path().c_str(), &st) == 0) fn(it->path(), st);
+    }
+}
 
 /// Runs fn(i) for i = 0..count-1 on `jobs` threads (fn(i, worker) when fn takes the worker's number too).
 template <class Fn> void parallelFor(int count, int jobs, Fn fn) {

@@ -40,16 +40,6 @@ Confinement g_confinement = Confinement::bubblewrap;
 /// test's runs, never another program's of user nobody).
 uid_t bubblewrapUser() { return weakened("pid") ? 64198 : 65534; }
 
-/// Calls fn(path, stat) for each entry of `dir` (or of its whole tree), never following a link.
-template <class Fn> void forEachEntry(const fs::path& dir, bool recursive, Fn fn) {
-    std::error_code ec;
-    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end; it.increment(ec)) {
-        if (!recursive) it.disable_recursion_pending();
-        struct stat st {};
-        if (::lstat(it->path().c_str(), &st) == 0) fn(it->path(), st);
-    }
-}
-
 /// Processes the user `uid` has now (RLIMIT_NPROC counts them all, so the limit is this + allowance).
 int processesOf(uid_t uid) {
     int n = 0;
