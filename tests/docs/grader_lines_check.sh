@@ -12,7 +12,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 
 # check PAGE: prints "total N" and every problem; exit 1 on a problem.
 check() {
-  local page=$1 sum=0 bad=0 part claimed got f n total
+  local page=$1 sum=0 bad=0 part claimed got f list n total
   awk '/^## Where the grader.s lines are/ { on = 1; next } on && /^## / { exit } on && /^\| `/ { print }' "$page" >"$tmp/rows"
   [[ -s $tmp/rows ]] || { echo "no rows under \"## Where the grader's lines are\" in $page"; return 1; }
   : >"$tmp/named"
@@ -20,14 +20,10 @@ check() {
     claimed=$(echo "$claimed" | tr -d ' ,')
     got=0
     for f in $(echo "$part" | grep -o '`[^`]*`' | tr -d '`'); do
-      n=0
-      for file in $(cd "$dir" && compgen -G "$f" || true); do
-        [[ -d $dir/$file ]] && { find "$dir/$file" -type f >>"$tmp/named"; n=$((n + $(find "$dir/$file" -type f -exec cat {} + | wc -l))); continue; }
-        echo "$dir/$file" >>"$tmp/named"
-        n=$((n + $(wc -l <"$dir/$file")))
-      done
-      ((n > 0)) || { echo "$f: names no file of framework/grading/"; bad=1; }
-      got=$((got + n))
+      list=$( (cd "$dir" && compgen -G "$f") | while read -r p; do find "$dir/$p" -type f; done)  # a folder: its files
+      [[ -n $list ]] || { echo "$f: names no file of framework/grading/"; bad=1; continue; }
+      echo "$list" >>"$tmp/named"
+      got=$((got + $(echo "$list" | xargs cat | wc -l)))
     done
     part=$(echo "${part//\`/}" | xargs)
     [[ $got == "$claimed" ]] || { echo "$part: the page says $claimed lines, the files have $got"; bad=1; }
